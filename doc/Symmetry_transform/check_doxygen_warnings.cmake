@@ -1,0 +1,16 @@
+# cmake -DDOXYGEN=<exe> -DDOXYFILE=<file> -DWARNINGS=<log> -P check_doxygen_warnings.cmake
+# Runs doxygen and fails if it wrote anything to its WARN_LOGFILE or to stderr.
+file(REMOVE ${WARNINGS})
+execute_process(COMMAND ${DOXYGEN} ${DOXYFILE} RESULT_VARIABLE rc ERROR_VARIABLE err)
+set(log "")
+if(EXISTS ${WARNINGS})
+  file(READ ${WARNINGS} log)
+endif()
+string(STRIP "${log}${err}" problems)
+if(NOT rc EQUAL 0 OR NOT problems STREQUAL "")
+  string(REGEX MATCHALL "warning:" found "${problems}")
+  list(LENGTH found count)
+  message("${problems}\n")  # as doxygen wrote it (FATAL_ERROR would re-wrap the lines)
+  message(FATAL_ERROR "doxygen: exit code ${rc}, ${count} warning(s) (log: ${WARNINGS})")
+endif()
+message(STATUS "doxygen: no warnings")

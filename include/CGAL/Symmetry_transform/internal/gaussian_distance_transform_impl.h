@@ -1,0 +1,153 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_GAUSSIAN_DISTANCE_TRANSFORM_IMPL_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_GAUSSIAN_DISTANCE_TRANSFORM_IMPL_H
+
+#include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/grid_settings.h>
+#include <CGAL/Symmetry_transform/internal/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/shape_input.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+template <typename GT>
+Voxel_grid<GT> empty_grid(const Shape_frame& frame, const Grid_settings& settings)
+{
+  const typename GT::Point_3 center(frame.center.x(), frame.center.y(), frame.center.z());
+  return Voxel_grid<GT>(settings.resolution, center, frame.radius, settings.side_length);
+}
+
+// Voxel index range [first, last] whose centres lie within [lo, hi] along one axis.
+inline std::pair<long, long> voxel_range(double lo, double hi, double origin, double h, long n)
+{
+  const long first = (std::max)(0L, long(std::ceil((lo - origin) / h - 0.5)));
+  const long last = (std::min)(n - 1, long(std::floor((hi - origin) / h - 0.5)));
+  return {first, last};
+}
+
+// Marks the voxels whose centre lies within `cutoff` of the plane of a triangle and inside
+// its bounding box grown by `cutoff`: a superset of the band where the GEDT is non-zero.
+template <typename GT>
+void mark_band_of_triangle(const Voxel_grid<GT>& grid, const Dtriangle& t, double cutoff,
+                           std::vector<char>& in_band)
+{
+  const double h = grid.voxel_size();
+  const long n = long(grid.resolution());
+  const auto& o = grid.origin();
+  const Bbox_3 box = t.bbox();
+  const auto ri = voxel_range(box.xmin() - cutoff, box.xmax() + cutoff, o[0], h, n);
+  const auto rj = voxel_range(box.ymin() - cutoff, box.ymax() + cutoff, o[1], h, n);
+  const auto rk = voxel_range(box.zmin() - cutoff, box.zmax() + cutoff, o[2], h, n);
+  Dvector normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+  normal = normal / std::sqrt(normal.squared_length());
+  for(long k = rk.first; k <= rk.second; ++k)
+    for(long j = rj.first; j <= rj.second; ++j)
+      for(long i = ri.first; i <= ri.second; ++i) {
+        const Dvector d(o[0] + (double(i) + 0.5) * h - t[0].x(), o[1] + (double(j) + 0.5) * h - t[0].y(),
+                        o[2] + (double(k) + 0.5) * h - t[0].z());
+        if(std::abs(d * normal) <= cutoff) in_band[grid.index(std::size_t(i), std::size_t(j), std::size_t(k))] = 1;
+      }
+}
+
+// Marks the voxels within `cutoff` of a point.
+template <typename GT>
+void mark_band_of_point(const Voxel_grid<GT>& grid, const Dpoint& p, double cutoff,
+                        std::vector<char>& in_band)
+{
+  const double h = grid.voxel_size();
+  const long n = long(grid.resolution());
+  const auto& o = grid.origin();
+  const auto ri = voxel_range(p.x() - cutoff, p.x() + cutoff, o[0], h, n);
+  const auto rj = voxel_range(p.y() - cutoff, p.y() + cutoff, o[1], h, n);
+  const auto rk = voxel_range(p.z() - cutoff, p.z() + cutoff, o[2], h, n);
+  for(long k = rk.first; k <= rk.second; ++k)
+    for(long j = rj.first; j <= rj.second; ++j)
+      for(long i = ri.first; i <= ri.second; ++i) {
+        const double dx = o[0] + (double(i) + 0.5) * h - p.x(), dy = o[1] + (double(j) + 0.5) * h - p.y(),
+                     dz = o[2] + (double(k) + 0.5) * h - p.z();
+        if(dx * dx + dy * dy + dz * dz <= cutoff * cutoff)
+          in_band[grid.index(std::size_t(i), std::size_t(j), std::size_t(k))] = 1;
+      }
+}
+
+// Sets each voxel of the band to exp(-d^2 / 2 sigma^2), d = squared_distance(thread, point)
+// computed in parallel, then normalises the grid to unit sum of squares.
+template <typename GT, typename SquaredDistance>
+void fill_gaussian_of_band(Voxel_grid<GT>& grid, const std::vector<char>& in_band,
+                           const Grid_settings& settings, const SquaredDistance& squared_distance)
+{
+  std::vector<std::size_t> band;
+  for(std::size_t v = 0; v < in_band.size(); ++v)
+    if(in_band[v]) band.push_back(v);
+  const std::size_t n = grid.resolution();
+  const double h = grid.voxel_size(), sigma = settings.sigma(), cutoff2 = settings.cutoff() * settings.cutoff();
+  const auto& o = grid.origin();
+  std::vector<double>& f = grid.values();
+  parallel_for(band.size(), settings.threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t b = begin; b < end; ++b) {
+      const std::size_t v = band[b];
+      const Dpoint p(o[0] + (double(v % n) + 0.5) * h, o[1] + (double(v / n % n) + 0.5) * h,
+                     o[2] + (double(v / (n * n)) + 0.5) * h);
+      const double d2 = squared_distance(p);
+      f[v] = d2 <= cutoff2 ? std::exp(-d2 / (2. * sigma * sigma)) : 0.;
+    }
+  });
+  double sum_of_squares = 0.;
+  for(double x : f) sum_of_squares += x * x;
+  const double scale = 1. / std::sqrt(sum_of_squares);
+  for(double& x : f) x *= scale;
+}
+
+template <typename GT>
+void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid,
+                                                   const std::vector<Dtriangle>& triangles,
+                                                   const Grid_settings& settings)
+{
+  typedef CGAL::AABB_triangle_primitive<Dkernel, std::vector<Dtriangle>::const_iterator> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Dkernel, Primitive>> Tree;
+
+  std::vector<char> in_band(grid.values().size(), 0);
+  for(const Dtriangle& t : triangles) mark_band_of_triangle(grid, t, settings.cutoff(), in_band);
+  Tree tree(triangles.begin(), triangles.end());
+  tree.build();
+  tree.accelerate_distance_queries();
+  tree.squared_distance(CGAL::ORIGIN); // builds the search structure before threads share the tree
+  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p) { return tree.squared_distance(p); });
+}
+
+template <typename GT>
+void fill_gaussian_distance_transform_of_points(Voxel_grid<GT>& grid, const std::vector<Dpoint>& points,
+                                                const Grid_settings& settings)
+{
+  typedef CGAL::Search_traits_3<Dkernel> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+
+  std::vector<char> in_band(grid.values().size(), 0);
+  for(const Dpoint& p : points) mark_band_of_point(grid, p, settings.cutoff(), in_band);
+  typename Search::Tree tree(points.begin(), points.end());
+  tree.build();
+  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p) {
+    Search search(tree, p, 1);
+    return search.begin()->second;
+  });
+}
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GAUSSIAN_DISTANCE_TRANSFORM_IMPL_H

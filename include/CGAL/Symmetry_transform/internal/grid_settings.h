@@ -1,0 +1,83 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H
+
+#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/shape_input.h>
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <unistd.h>
+#endif
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+// Beyond this many standard deviations the Gaussian is set to zero: exp(-4.5) = 1.1%, and
+// the energy lost, erfc(3) ~ 2e-5 of the total, is far below the discretisation error.
+constexpr double gaussian_cutoff_in_sigmas = 3.;
+
+inline void check_memory(double bytes, const std::string& what)
+{
+  double available = 64. * 1024. * 1024. * 1024.;
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+  available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+#endif
+  if(bytes > 0.75 * available)
+    throw std::invalid_argument("Symmetry_transform: " + what + " needs " +
+                                std::to_string(bytes / (1024. * 1024. * 1024.)) +
+                                " GiB, more than this machine's memory: lower grid_resolution");
+}
+
+// Grid resolution n, Gaussian width sigma (in voxels) and cube side, from the named
+// parameters. The default side leaves room for the Gaussian tail around the bounding sphere:
+// side/2 = R + cutoff * sigma * side / n.
+struct Grid_settings
+{
+  std::size_t resolution;
+  double sigma_in_voxels;
+  double side_length;
+  unsigned threads;
+
+  double voxel_size() const { return side_length / double(resolution); }
+  double sigma() const { return sigma_in_voxels * voxel_size(); }
+  double cutoff() const { return gaussian_cutoff_in_sigmas * sigma(); }
+};
+
+template <typename NamedParameters>
+Grid_settings grid_settings(const NamedParameters& np, double radius)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const long n = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), 64));
+  const double sigma = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), 1.5));
+  const double margin = double(choose_parameter(get_parameter(np, internal_np::st_grid_margin), 0.));
+  const unsigned threads = unsigned(
+    choose_parameter(get_parameter(np, internal_np::st_number_of_threads), default_number_of_threads()));
+  if(!(sigma > 0.))
+    throw std::invalid_argument("Symmetry_transform: gaussian_width must be positive");
+  const double tail = 2. * gaussian_cutoff_in_sigmas * sigma;
+  if(n < 8 || double(n) <= 2. * tail)
+    throw std::invalid_argument("Symmetry_transform: grid_resolution " + std::to_string(n) +
+                                " is too small: it must be at least 8 and more than " +
+                                std::to_string(2. * tail) + " (4 x 3 Gaussian widths)");
+  check_memory(2. * double(n) * double(n) * double(n) * sizeof(double), "a grid of this resolution");
+  if(margin != 0. && !(margin >= 1.))
+    throw std::invalid_argument("Symmetry_transform: grid_margin must be at least 1");
+  const double factor = margin != 0. ? margin : 1. / (1. - tail / double(n));
+  return {std::size_t(n), sigma, 2. * radius * factor, (std::max)(1u, threads)};
+}
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H

@@ -1,0 +1,32 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_MESH_GEOM_TRAITS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_MESH_GEOM_TRAITS_H
+
+#include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+// The traits of a mesh, as GetGeomTraits, but with no `type` for a Voxel_grid: the transforms
+// are overloaded on meshes and grids, and this keeps the mesh overloads out of the way of
+// grids (SFINAE) instead of failing deep inside GetGeomTraits.
+template <typename TriangleMesh, typename NamedParameters>
+struct Mesh_geom_traits
+{
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type type;
+};
+
+template <typename GT, typename NamedParameters>
+struct Mesh_geom_traits<Voxel_grid<GT>, NamedParameters>
+{};
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_MESH_GEOM_TRAITS_H

@@ -1,0 +1,212 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_MONTE_CARLO_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_MONTE_CARLO_H
+
+// Monte Carlo estimation of the bin averages of SM(plane) = int f(x) f(g(x)) dx / int f^2,
+// with x drawn with probability proportional to f (alias table over the voxels, uniform
+// jitter inside the voxel: the density of the piecewise-constant reconstruction of f).
+// The work is cut into fixed chunks, each with its own random stream derived from the seed,
+// so that results depend on the seed and the number of threads only.
+
+#include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/reflective_symmetry_exact.h>
+
+#include <boost/random/discrete_distribution.hpp>
+#include <boost/random/mersenne_twister.hpp>
+#include <boost/random/uniform_01.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+enum class Estimator { PAIR_JACOBIAN, BOUNDED_WEIGHT, STRATIFIED_LINES };
+
+template <typename GT>
+class Monte_carlo_reflective_symmetry
+{
+public:
+  Monte_carlo_reflective_symmetry(const Voxel_grid<GT>& f, const Plane_bins& bins)
+    : f_(f), bins_(bins), h_(f.voxel_size())
+  {
+    std::vector<double> weights;
+    for(std::size_t v = 0; v < f.values().size(); ++v)
+      if(f.values()[v] > 0.) {
+        voxels_.push_back(std::uint32_t(v));
+        weights.push_back(f.values()[v]);
+        sum_ += f.values()[v];
+        sum_of_squares_ += f.values()[v] * f.values()[v];
+      }
+    voxel_distribution_ = boost::random::discrete_distribution<std::uint32_t, double>(weights.begin(), weights.end());
+    support_ = support_radius(f);
+  }
+
+  void run(Estimator estimator, std::size_t pairs, unsigned seed, unsigned threads, std::vector<double>& values) const
+  {
+    if(estimator == Estimator::STRATIFIED_LINES) {
+      run_stratified_lines(pairs, seed, threads, values);
+      return;
+    }
+    const std::size_t chunk = std::size_t(1) << 15, chunks = (pairs + chunk - 1) / chunk;
+    threads = unsigned((std::min<std::size_t>)(threads, (std::max<std::size_t>)(chunks, 1)));
+    std::vector<std::vector<double>> votes(threads);
+    parallel_for(chunks, threads, [&](unsigned t, std::size_t begin, std::size_t end) {
+      votes[t].assign(values.size(), 0.);
+      for(std::size_t c = begin; c < end; ++c) {
+        boost::random::mt19937 rng(std::uint32_t(seed) * 2654435761u + std::uint32_t(c) * 40503u + 1u);
+        const std::size_t count = (std::min)(chunk, pairs - c * chunk);
+        if(estimator == Estimator::PAIR_JACOBIAN)
+          vote_pairs(rng, count, votes[t]);
+        else if(estimator == Estimator::BOUNDED_WEIGHT)
+          vote_bounded(rng, count, votes[t]);
+
+      }
+    });
+    // Normalisation: Z = sum f h^3 and ||f||^2 = sum f^2 h^3 (see DESIGN.md).
+    const double volume = h_ * h_ * h_;
+    const double scale = estimator == Estimator::PAIR_JACOBIAN
+                           ? sum_ * sum_ * volume / (double(pairs) * bins_.bin_volume() * sum_of_squares_)
+                           : sum_ * 2. * support_ * CGAL_PI * CGAL_PI /
+                               (double(pairs) * bins_.bin_volume() * sum_of_squares_);
+    values.assign(values.size(), 0.);
+    for(const std::vector<double>& v : votes)
+      for(std::size_t b = 0; b < values.size(); ++b) values[b] += v[b];
+    for(double& v : values) v *= scale;
+  }
+
+private:
+  typedef boost::random::mt19937 Rng;
+
+  std::array<double, 3> draw_point(Rng& rng) const
+  {
+    const std::size_t v = voxels_[voxel_distribution_(rng)], n = f_.resolution();
+    const auto& o = f_.origin();
+    boost::random::uniform_01<double> u;
+    return {o[0] + (double(v % n) + u(rng)) * h_, o[1] + (double(v / n % n) + u(rng)) * h_,
+            o[2] + (double(v / (n * n)) + u(rng)) * h_};
+  }
+
+  // Bin of the plane {y : normal.y = d}, or -1 when it is farther than R from the centre.
+  long bin_of(const std::array<double, 3>& normal, double d) const
+  {
+    std::array<double, 3> u;
+    if(!bins_.coordinates(normal, d, u)) return -1;
+    const long m = long(bins_.n);
+    const long i = (std::min)(m - 1, long(u[0] + 0.5)), j = long(u[1] + 0.5) % m, k = (std::min)(m - 1, long(u[2] + 0.5));
+    return long(bins_.index(std::size_t(i), std::size_t(j), std::size_t(k)));
+  }
+
+  // The thesis's estimator: the pair (x, x') votes for its bisector plane with weight
+  // 1/|J| = 1/(2 d^2 sin(theta)), d = |x - x'|.
+  void vote_pairs(Rng& rng, std::size_t count, std::vector<double>& votes) const
+  {
+    for(std::size_t s = 0; s < count; ++s) {
+      const std::array<double, 3> x = draw_point(rng), y = draw_point(rng);
+      std::array<double, 3> normal = {y[0] - x[0], y[1] - x[1], y[2] - x[2]};
+      const double d2 = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
+      if(d2 == 0.) continue;
+      const double d = std::sqrt(d2);
+      for(double& c : normal) c /= d;
+      const double sin_theta = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1]);
+      if(sin_theta == 0.) continue;
+      const long b = bin_of(normal, 0.5 * (normal[0] * (x[0] + y[0]) + normal[1] * (x[1] + y[1]) +
+                                           normal[2] * (x[2] + y[2])));
+      if(b >= 0) votes[std::size_t(b)] += 1. / (2. * d2 * sin_theta);
+    }
+  }
+
+  // The bounded-weight estimator of DESIGN.md: the plane is drawn uniformly in
+  // (theta, phi, r - n.x) around x, and votes f(x') for the reflection x' of x.
+  void vote_bounded(Rng& rng, std::size_t count, std::vector<double>& votes) const
+  {
+    boost::random::uniform_01<double> u;
+    // |x' - x| <= 2 * support: the signed distance from x to x' spans a width W = 4 * support,
+    // so the density of the plane is 2 / (pi^2 W) and the vote's weight pi^2 W / 2.
+    const double width = 4. * support_;
+    for(std::size_t s = 0; s < count; ++s) {
+      const std::array<double, 3> x = draw_point(rng);
+      const double t = u(rng) * CGAL_PI / 2., p = u(rng) * 2. * CGAL_PI;
+      const double distance = (u(rng) - 0.5) * width;
+      const std::array<double, 3> normal = {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+      const double image = f_.sample_or_zero(voxel(x[0] + distance * normal[0], 0),
+                                             voxel(x[1] + distance * normal[1], 1),
+                                             voxel(x[2] + distance * normal[2], 2));
+      if(image == 0.) continue;
+      const long b = bin_of(normal, normal[0] * x[0] + normal[1] * x[1] + normal[2] * x[2] + 0.5 * distance);
+      if(b >= 0) votes[std::size_t(b)] += image;
+    }
+  }
+
+  // For each bin direction, points x drawn proportionally to f by systematic sampling of the
+  // cumulative distribution (evenly spread, one random offset per direction), and f evaluated
+  // at the reflections of x through the planes of all offsets r_k: the pairs (x, x') lie on a
+  // line, so every offset of the direction is estimated from the same points. This estimates
+  // sum_x f(x) f(g(x)) / sum_x f(x)^2 at the bin centres, as the exact method computes.
+  void run_stratified_lines(std::size_t samples, unsigned seed, unsigned threads, std::vector<double>& values) const
+  {
+    const std::size_t n = bins_.n;
+    const std::size_t per_direction = (std::max<std::size_t>)(1, samples / (n * n));
+    std::vector<double> cumulative(voxels_.size());
+    double running = 0.;
+    for(std::size_t v = 0; v < voxels_.size(); ++v) cumulative[v] = running += f_.values()[voxels_[v]];
+    const double scale = sum_ / (double(per_direction) * sum_of_squares_);
+    const Voxel_grid<GT> sharp = sharpened_for_trilinear_interpolation(f_);
+    const double step = bins_.offset_step(), support2 = support_ * support_;
+    const auto& o = f_.origin();
+    parallel_for(n * n, threads, [&](unsigned, std::size_t begin, std::size_t end) {
+      for(std::size_t direction = begin; direction < end; ++direction) {
+        Rng rng(std::uint32_t(seed) * 2654435761u + std::uint32_t(direction) * 40503u + 1u);
+        const double offset = boost::random::uniform_01<double>()(rng);
+        const std::array<double, 3> nrm = bins_.normal(direction / n, direction % n);
+        double* line = values.data() + direction * n;
+        std::fill_n(line, n, 0.);
+        for(std::size_t m = 0; m < per_direction; ++m) {
+          const double target = (double(m) + offset) / double(per_direction) * running;
+          const std::size_t v = voxels_[std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), target) -
+                                                    cumulative.begin())];
+          const std::size_t res = f_.resolution();
+          const double x[3] = {o[0] + (double(v % res) + 0.5) * h_ - bins_.center[0],
+                               o[1] + (double(v / res % res) + 0.5) * h_ - bins_.center[1],
+                               o[2] + (double(v / (res * res)) + 0.5) * h_ - bins_.center[2]};
+          // x' - c = q + (2 r_k - s) n, q the part of x - c orthogonal to n: only the offsets
+          // with |x' - c| <= support can see f.
+          const double s = nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2];
+          const double q2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - s * s;
+          if(q2 > support2) continue;
+          const double reach = std::sqrt(support2 - q2);
+          const long first = (std::max)(0L, long(std::ceil(((s - reach) / 2. + bins_.radius) / step - 0.5)));
+          const long last = (std::min)(long(n) - 1, long(std::floor(((s + reach) / 2. + bins_.radius) / step - 0.5)));
+          for(long k = first; k <= last; ++k) {
+            const double t = 2. * (bins_.offset(std::size_t(k)) - s);
+            line[k] += sharp.trilinear_value(bins_.center[0] + x[0] + t * nrm[0], bins_.center[1] + x[1] + t * nrm[1],
+                                          bins_.center[2] + x[2] + t * nrm[2]);
+          }
+        }
+        for(std::size_t k = 0; k < n; ++k) line[k] *= scale;
+      }
+    });
+  }
+
+  long voxel(double coordinate, int axis) const { return long(std::floor((coordinate - f_.origin()[axis]) / h_)); }
+
+  const Voxel_grid<GT>& f_;
+  Plane_bins bins_;
+  double h_;
+  std::vector<std::uint32_t> voxels_;
+  boost::random::discrete_distribution<std::uint32_t, double> voxel_distribution_;
+  double sum_ = 0., sum_of_squares_ = 0., support_ = 0.;
+};
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_MONTE_CARLO_H

@@ -1,0 +1,130 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SHAPE_INPUT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SHAPE_INPUT_H
+
+// Reading a mesh or a point set into plain double geometry, with the checks of the bad-input
+// contract (DESIGN.md): every public entry point goes through here.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+// The numerical kernels work in double precision whatever the user's kernel.
+typedef CGAL::Simple_cartesian<double> Dkernel;
+typedef Dkernel::Point_3 Dpoint;
+typedef Dkernel::Vector_3 Dvector;
+typedef Dkernel::Triangle_3 Dtriangle;
+
+// Centre of mass and radius: the frame every grid and every plane offset is expressed in.
+struct Shape_frame
+{
+  Dpoint center;
+  double radius;
+};
+
+template <typename Point>
+Dpoint to_dpoint(const Point& p)
+{
+  const Dpoint q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  if(!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()))
+    throw std::invalid_argument("Symmetry_transform: the input has a NaN or infinite coordinate");
+  return q;
+}
+
+// The triangles of a FaceListGraph, with degenerate ones (zero area) left out: they carry no
+// surface. Throws on an empty mesh, a non-triangle face, a non-finite coordinate, or a mesh
+// whose faces are all degenerate.
+template <typename TriangleMesh, typename VertexPointMap>
+std::vector<Dtriangle> triangles_of_mesh(const TriangleMesh& tm, const VertexPointMap& vpm)
+{
+  std::vector<Dtriangle> triangles;
+  std::size_t number_of_faces = 0;
+  for(auto f : faces(tm)) {
+    ++number_of_faces;
+    const auto h = halfedge(f, tm);
+    if(!CGAL::is_triangle(h, tm))
+      throw std::invalid_argument("Symmetry_transform: the mesh has a face that is not a triangle "
+                                  "(triangulate it first, e.g. with "
+                                  "CGAL::Polygon_mesh_processing::triangulate_faces)");
+    const Dtriangle t(to_dpoint(get(vpm, source(h, tm))), to_dpoint(get(vpm, target(h, tm))),
+                      to_dpoint(get(vpm, target(next(h, tm), tm))));
+    if(t.squared_area() > 0.) triangles.push_back(t);
+  }
+  if(number_of_faces == 0) throw std::invalid_argument("Symmetry_transform: the mesh has no face");
+  if(triangles.empty())
+    throw std::invalid_argument("Symmetry_transform: all faces of the mesh are degenerate (zero area)");
+  return triangles;
+}
+
+inline void check_radius(double radius)
+{
+  if(!(radius > 0.))
+    throw std::invalid_argument("Symmetry_transform: the input is a single point (zero radius)");
+}
+
+// Area-weighted centroid of the surface and largest distance from it to a vertex.
+inline Shape_frame frame_of_triangles(const std::vector<Dtriangle>& triangles)
+{
+  double area = 0., x = 0., y = 0., z = 0.;
+  for(const Dtriangle& t : triangles) {
+    const double a = std::sqrt(t.squared_area());
+    const Dpoint c = CGAL::centroid(t[0], t[1], t[2]);
+    area += a;
+    x += a * c.x();
+    y += a * c.y();
+    z += a * c.z();
+  }
+  const Dpoint center(x / area, y / area, z / area);
+  double r2 = 0.;
+  for(const Dtriangle& t : triangles)
+    for(int i = 0; i < 3; ++i) r2 = (std::max)(r2, CGAL::squared_distance(center, t[i]));
+  check_radius(std::sqrt(r2));
+  return {center, std::sqrt(r2)};
+}
+
+// The points of a range, through a point map. Throws on an empty range or a non-finite coordinate.
+template <typename PointRange, typename PointMap>
+std::vector<Dpoint> points_of_range(const PointRange& points, const PointMap& point_map)
+{
+  std::vector<Dpoint> result;
+  for(const auto& p : points) result.push_back(to_dpoint(get(point_map, p)));
+  if(result.empty()) throw std::invalid_argument("Symmetry_transform: the point set is empty");
+  return result;
+}
+
+// Mean of the points and largest distance from it to a point.
+inline Shape_frame frame_of_points(const std::vector<Dpoint>& points)
+{
+  double x = 0., y = 0., z = 0.;
+  for(const Dpoint& p : points) {
+    x += p.x();
+    y += p.y();
+    z += p.z();
+  }
+  const double m = double(points.size());
+  const Dpoint center(x / m, y / m, z / m);
+  double r2 = 0.;
+  for(const Dpoint& p : points) r2 = (std::max)(r2, CGAL::squared_distance(center, p));
+  check_radius(std::sqrt(r2));
+  return {center, std::sqrt(r2)};
+}
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SHAPE_INPUT_H

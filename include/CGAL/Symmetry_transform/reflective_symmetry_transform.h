@@ -1,0 +1,344 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H
+#define CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H
+
+#include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
+#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/reflective_symmetry_exact.h>
+#include <CGAL/Symmetry_transform/internal/reflective_symmetry_io.h>
+#include <CGAL/Symmetry_transform/internal/reflective_symmetry_monte_carlo.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Symmetry_transform {
+
+/*!
+\ingroup PkgSymmetryTransformRef
+How `reflective_symmetry_transform()` computes the symmetry measures of the bins.
+*/
+enum class Reflective_symmetry_method {
+  /// Importance-sampled pairs of points vote for their bisector planes: \f$ O(N) \f$ for
+  /// \f$ N \f$ pairs; the bin values are bin averages with noise falling as \f$ 1/\sqrt{N} \f$.
+  MONTE_CARLO,
+  /// One self-convolution per normal direction by FFT, \f$ O(n^5 \log n) \f$: the reference.
+  EXACT
+};
+
+/*!
+\ingroup PkgSymmetryTransformRef
+The Monte Carlo estimator used by `Reflective_symmetry_method::MONTE_CARLO`.
+*/
+enum class Monte_carlo_estimator {
+  /// The thesis's: both points drawn proportionally to \f$ f \f$, each pair votes
+  /// \f$ 1/(2 d^2 \sin\theta) \f$ for its bisector plane (\f$ d \f$ the distance between the points).
+  PAIR_JACOBIAN,
+  /// One point drawn proportionally to \f$ f \f$ and the plane uniformly in
+  /// \f$ (\theta, \phi, r) \f$ around it; the vote is \f$ f \f$ at the reflected point, a bounded weight.
+  BOUNDED_WEIGHT,
+  /// For each bin direction, points drawn proportionally to \f$ f \f$ by systematic sampling,
+  /// each paired with its reflections through the planes of all offsets of the direction:
+  /// an estimate of the values at the bin centres whose noise is spread evenly over the bins.
+  /// `number_of_samples` then counts the points drawn over all directions.
+  STRATIFIED_LINES
+};
+
+/*!
+\ingroup PkgSymmetryTransformRef
+
+The Planar Reflective Symmetry Transform (PRST) of a function \f$ f \f$ (usually the GEDT of a
+shape): the symmetry measure
+\f$ SM(\gamma) = \int f(x) f(\gamma(x))\,dx / \int f^2 \in [0,1] \f$ of every plane
+\f$ \gamma \f$, tabulated on \f$ n \times n \times n \f$ bins.
+
+A plane is \f$ \{x : \mathbf{n}\cdot(x - c) = r\} \f$, with \f$ c \f$ the centre of mass of the
+shape and the unit normal
+\f$ \mathbf{n}(\theta,\phi) = (\sin\theta\cos\phi, \sin\theta\sin\phi, \cos\theta) \f$,
+\f$ \theta \in [0,\pi/2] \f$, \f$ \phi \in [0, 2\pi) \f$, \f$ r \in [-R, R] \f$ (\f$ R \f$ the
+radius of the shape). Bin `(i,j,k)` covers
+\f$ [i, i+1)\,\Delta\theta \times [j, j+1)\,\Delta\phi \times (-R + [k, k+1)\,\Delta r) \f$
+with \f$ \Delta\theta = \pi/2n \f$, \f$ \Delta\phi = 2\pi/n \f$, \f$ \Delta r = 2R/n \f$.
+In this parameter space \f$ \phi \f$ wraps around, and a plane on the equator is also
+\f$ (\pi/2, \phi + \pi, -r) \f$.
+
+\tparam GeomTraits a model of `Kernel`
+*/
+template <typename GeomTraits>
+class Reflective_symmetry_transform
+{
+public:
+  /// Point type of the traits.
+  typedef typename GeomTraits::Point_3 Point_3;
+  /// Plane type of the traits.
+  typedef typename GeomTraits::Plane_3 Plane_3;
+  /// Bin coordinates `(i,j,k)`: indices of \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$.
+  typedef std::array<std::size_t, 3> Bin;
+
+  /// Creates a transform with `resolution`³ bins, all zero, for a shape of centre `center` and radius `radius`.
+  /// \pre `resolution` is even and positive, `radius > 0`.
+  Reflective_symmetry_transform(std::size_t resolution, const Point_3& center, double radius)
+    : center_(center),
+      bins_{resolution, {CGAL::to_double(center.x()), CGAL::to_double(center.y()), CGAL::to_double(center.z())}, radius},
+      values_(resolution * resolution * resolution, 0.)
+  {
+    if(resolution == 0 || resolution % 2 != 0)
+      throw std::invalid_argument("Reflective_symmetry_transform: the resolution must be even and positive "
+                                  "(the bins of phi + pi must exist)");
+    if(!(radius > 0.)) throw std::invalid_argument("Reflective_symmetry_transform: the radius must be positive");
+  }
+
+  /// Number \f$ n \f$ of bins along each of \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$.
+  std::size_t resolution() const { return bins_.n; }
+  /// Centre \f$ c \f$ of the shape, from which plane offsets are measured.
+  const Point_3& center() const { return center_; }
+  /// Radius \f$ R \f$ of the shape: offsets lie in \f$ [-R, R] \f$.
+  double radius() const { return bins_.radius; }
+
+  /// \f$ \theta \f$ at the centre of the bins of index `i`.
+  double theta(std::size_t i) const { return bins_.theta(i); }
+  /// \f$ \phi \f$ at the centre of the bins of index `j`.
+  double phi(std::size_t j) const { return bins_.phi(j); }
+  /// \f$ r \f$ at the centre of the bins of index `k`.
+  double offset(std::size_t k) const { return bins_.offset(k); }
+
+  /// Symmetry measure of bin `(i,j,k)`.
+  double value(std::size_t i, std::size_t j, std::size_t k) const { return values_[bins_.index(i, j, k)]; }
+  /// Symmetry measure of bin `b`.
+  double value(const Bin& b) const { return value(b[0], b[1], b[2]); }
+
+  /// The plane at the centre of bin `(i,j,k)`, with a unit normal.
+  Plane_3 plane(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    const std::array<double, 3> nrm = bins_.normal(i, j);
+    const double d = nrm[0] * bins_.center[0] + nrm[1] * bins_.center[1] + nrm[2] * bins_.center[2] + offset(k);
+    return Plane_3(nrm[0], nrm[1], nrm[2], -d);
+  }
+  /// The plane at the centre of bin `b`.
+  Plane_3 plane(const Bin& b) const { return plane(b[0], b[1], b[2]); }
+
+  /// The bin containing `plane`, whose offset must lie in \f$ [-R, R] \f$.
+  /// \throws std::invalid_argument if the plane is degenerate or farther than \f$ R \f$ from the centre.
+  Bin bin(const Plane_3& plane) const
+  {
+    const std::array<double, 3> u = coordinates(plane);
+    const long m = long(bins_.n);
+    return {std::size_t((std::min)(m - 1, long(u[0] + 0.5))), std::size_t(long(u[1] + 0.5) % m),
+            std::size_t((std::min)(m - 1, long(u[2] + 0.5)))};
+  }
+
+  /// Symmetry measure of any `plane` within \f$ R \f$ of the centre, interpolated trilinearly
+  /// between bin centres, across the wraps of \f$ \phi \f$, the pole and the equator.
+  /// \throws std::invalid_argument if the plane is degenerate or farther than \f$ R \f$ from the centre.
+  double value(const Plane_3& plane) const
+  {
+    const std::array<double, 3> u = coordinates(plane);
+    const long i = long(std::floor(u[0])), j = long(std::floor(u[1])), k = long(std::floor(u[2]));
+    const double a = u[0] - double(i), b = u[1] - double(j), c = u[2] - double(k);
+    double result = 0.;
+    for(int di = 0; di < 2; ++di)
+      for(int dj = 0; dj < 2; ++dj)
+        for(int dk = 0; dk < 2; ++dk)
+          result += (di ? a : 1. - a) * (dj ? b : 1. - b) * (dk ? c : 1. - c) *
+                    values_[bins_.wrapped_index(i + di, j + dj, k + dk)];
+    return result;
+  }
+
+  /// The bin of largest symmetry measure.
+  Bin maximum() const
+  {
+    const std::size_t best = std::size_t(std::max_element(values_.begin(), values_.end()) - values_.begin());
+    const std::size_t n = bins_.n;
+    return {best / (n * n), best / n % n, best % n};
+  }
+
+  /// All bin values, `k` fastest, then `j`, then `i`.
+  std::vector<double>& values() { return values_; }
+  /// All bin values, `k` fastest, then `j`, then `i`.
+  const std::vector<double>& values() const { return values_; }
+
+  /// Writes the transform in a binary format with a versioned header and a checksum.
+  void save(std::ostream& os) const
+  {
+    internal::write_reflective_symmetry(os, bins_, values_);
+  }
+  /// Writes the transform to the file `filename`.
+  /// \throws std::runtime_error if the file cannot be written.
+  void save(const std::string& filename) const
+  {
+    std::ofstream os(filename, std::ios::binary);
+    if(!os) throw std::runtime_error("Reflective_symmetry_transform: cannot open " + filename + " for writing");
+    save(os);
+    if(!os) throw std::runtime_error("Reflective_symmetry_transform: cannot write " + filename);
+  }
+
+  /// Reads a transform written by `save()`.
+  /// \throws std::runtime_error if the stream does not hold such a transform, is truncated or corrupt.
+  static Reflective_symmetry_transform load(std::istream& is)
+  {
+    internal::Plane_bins bins{0, {0., 0., 0.}, 0.};
+    std::vector<double> values;
+    internal::read_reflective_symmetry(is, bins, values);
+    Reflective_symmetry_transform result(bins.n, Point_3(bins.center[0], bins.center[1], bins.center[2]), bins.radius);
+    result.values_ = std::move(values);
+    return result;
+  }
+  /// Reads a transform from the file `filename`.
+  /// \throws std::runtime_error if the file cannot be opened or does not hold a transform written by `save()`.
+  static Reflective_symmetry_transform load(const std::string& filename)
+  {
+    std::ifstream is(filename, std::ios::binary);
+    if(!is) throw std::runtime_error("Reflective_symmetry_transform: cannot open " + filename);
+    return load(is);
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  const internal::Plane_bins& bins() const { return bins_; }
+  /// \endcond
+
+private:
+  std::array<double, 3> coordinates(const Plane_3& plane) const
+  {
+    const double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()), c = CGAL::to_double(plane.c());
+    const double length = std::sqrt(a * a + b * b + c * c);
+    if(!(length > 0.)) throw std::invalid_argument("Reflective_symmetry_transform: degenerate plane");
+    std::array<double, 3> u;
+    if(!bins_.coordinates({a / length, b / length, c / length}, -CGAL::to_double(plane.d()) / length, u))
+      throw std::invalid_argument("Reflective_symmetry_transform: the plane is farther than the radius from the centre");
+    return u;
+  }
+
+  Point_3 center_;
+  internal::Plane_bins bins_;
+  std::vector<double> values_;
+};
+
+/*!
+\ingroup PkgSymmetryTransformRef
+
+Computes the Planar Reflective Symmetry Transform of a function sampled on a grid, usually
+the GEDT of a shape from `gaussian_distance_transform()`, with as many bins along
+\f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$ as the grid has samples along an axis.
+
+\tparam GeomTraits a model of `Kernel`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param f the function; its `center()` and `radius()` define the offsets of the planes
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{prst_method}
+    \cgalParamDescription{how the bins are computed}
+    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
+    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_samples}
+    \cgalParamDescription{the number of Monte Carlo samples (pairs of points, or point and plane)}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{2,000,000}
+  \cgalParamNEnd
+  \cgalParamNBegin{monte_carlo_estimator}
+    \cgalParamDescription{the Monte Carlo estimator}
+    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
+    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`std::thread::hardware_concurrency()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{whether to print the time taken on `std::cerr`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, or its radius is zero.
+*/
+template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
+Reflective_symmetry_transform<GeomTraits>
+reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const Reflective_symmetry_method method =
+    choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
+  const std::size_t pairs = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), 2000000));
+  const Monte_carlo_estimator estimator =
+    choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
+  const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), 0u));
+  const unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
+                                                     internal::default_number_of_threads()));
+  const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+
+  if(f.resolution() % 2 != 0)
+    throw std::invalid_argument("reflective_symmetry_transform: grid_resolution must be even "
+                                "(a plane on the equator is also the plane of phi + pi)");
+  if(std::none_of(f.values().begin(), f.values().end(), [](double v) { return v != 0.; }))
+    throw std::invalid_argument("reflective_symmetry_transform: the grid is zero everywhere");
+
+  const auto start = std::chrono::steady_clock::now();
+  Reflective_symmetry_transform<GeomTraits> result(f.resolution(), f.center(), f.radius());
+  if(method == Reflective_symmetry_method::EXACT) {
+    internal::exact_reflective_symmetry(f, result.bins(), (std::max)(1u, threads), result.values());
+  } else {
+    if(pairs == 0) throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
+    internal::Monte_carlo_reflective_symmetry<GeomTraits>(f, result.bins())
+      .run(internal::Estimator(int(estimator)),
+           pairs, seed, (std::max)(1u, threads), result.values());
+  }
+  if(verbose)
+    std::cerr << "reflective_symmetry_transform: " << f.resolution() << "^3 bins, "
+              << (method == Reflective_symmetry_method::EXACT ? "exact" : "Monte Carlo") << ", "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+  return result;
+}
+
+/*!
+\ingroup PkgSymmetryTransformRef
+
+Computes the Planar Reflective Symmetry Transform of a triangle mesh: its GEDT by
+`gaussian_distance_transform(tm, np)`, then `reflective_symmetry_transform()` of that grid.
+The named parameters are those of both functions; `grid_resolution` must be even.
+*/
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
+reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
+{
+  return reflective_symmetry_transform(gaussian_distance_transform(tm, np), np);
+}
+
+/*!
+\ingroup PkgSymmetryTransformRef
+
+Computes the Planar Reflective Symmetry Transform of a point set: its GEDT by
+`gaussian_distance_transform_of_points(points, np)`, then `reflective_symmetry_transform()` of that grid.
+*/
+template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+reflective_symmetry_transform_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
+{
+  return reflective_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
+}
+
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H

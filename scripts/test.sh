@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds everything (Release) in build/ and runs all tests.
+# BENCHMARKS=1 also builds the benchmark programs (they are not run here).
+set -euo pipefail
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+BUILD=$ROOT/build
+JOBS=$(nproc)
+# Tests run in parallel too; CTEST_JOBS=1 if transforms that use every core slow each other down.
+CTEST_JOBS=${CTEST_JOBS:-$JOBS}
+
+DATA_DIR=$BUILD/data bash "$ROOT/scripts/setup.sh"
+cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
+  -DSYMMETRY_TRANSFORM_BUILD_EXAMPLES=ON -DSYMMETRY_TRANSFORM_BUILD_TESTS=ON \
+  -DSYMMETRY_TRANSFORM_BUILD_DOC=ON \
+  -DSYMMETRY_TRANSFORM_BUILD_BENCHMARKS="$([ "${BENCHMARKS:-0}" = 1 ] && echo ON || echo OFF)" \
+  -DSYMMETRY_TRANSFORM_DATA_DIR="$BUILD/data"
+cmake --build "$BUILD" -j "$JOBS"
+ctest --test-dir "$BUILD" --output-on-failure -j "$CTEST_JOBS"
