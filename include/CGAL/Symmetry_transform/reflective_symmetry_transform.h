@@ -14,6 +14,7 @@
 #include <CGAL/Symmetry_transform/internal/reflective_symmetry_io.h>
 #include <CGAL/Symmetry_transform/internal/reflective_symmetry_monte_carlo.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -161,6 +162,37 @@ public:
     const std::size_t best = std::size_t(std::max_element(values_.begin(), values_.end()) - values_.begin());
     const std::size_t n = bins_.n;
     return {best / (n * n), best / n % n, best % n};
+  }
+
+  /*!
+  Writes to `out` every bin whose value exceeds those of its 26 neighbours (through the
+  wraps of \f$ \phi \f$, the pole and the equator; along \f$ r \f$ the bins at \f$ \pm R \f$
+  have fewer neighbours), strongest first, and returns the past-the-end iterator.
+  \tparam OutputIterator an output iterator accepting `Bin`
+  \param out where the bins are written
+  */
+  template <typename OutputIterator>
+  OutputIterator local_maxima(OutputIterator out) const
+  {
+    const long n = long(bins_.n);
+    std::vector<Bin> maxima;
+    for(long i = 0; i < n; ++i)
+      for(long j = 0; j < n; ++j)
+        for(long k = 0; k < n; ++k) {
+          const double v = values_[bins_.index(std::size_t(i), std::size_t(j), std::size_t(k))];
+          bool is_maximum = true;
+          for(long di = -1; di <= 1 && is_maximum; ++di)
+            for(long dj = -1; dj <= 1 && is_maximum; ++dj)
+              for(long dk = -1; dk <= 1 && is_maximum; ++dk) {
+                if((di == 0 && dj == 0 && dk == 0) || k + dk < 0 || k + dk >= n) continue;
+                const std::size_t neighbour = bins_.wrapped_index(i + di, j + dj, k + dk);
+                is_maximum = neighbour == bins_.index(std::size_t(i), std::size_t(j), std::size_t(k)) ||
+                             values_[neighbour] < v;
+              }
+          if(is_maximum) maxima.push_back({std::size_t(i), std::size_t(j), std::size_t(k)});
+        }
+    std::sort(maxima.begin(), maxima.end(), [&](const Bin& a, const Bin& b) { return value(a) > value(b); });
+    return std::copy(maxima.begin(), maxima.end(), out);
   }
 
   /// All bin values, `k` fastest, then `j`, then `i`.
