@@ -20,6 +20,7 @@
 #include <boost/random/mersenne_twister.hpp>
 #include <boost/random/uniform_01.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -27,6 +28,54 @@
 namespace CGAL {
 namespace Symmetry_transform {
 namespace internal {
+
+// Trilinear interpolation that first looks up a coarse map of the blocks of 4^3 voxels that
+// can see a non-zero sample (a block and the voxel after it along each axis): most points of
+// a line through a surface's thin band are in empty space, and the map fits in the L1 cache.
+template <typename GT>
+class Sparse_trilinear_interpolation
+{
+public:
+  explicit Sparse_trilinear_interpolation(const Voxel_grid<GT>& f)
+    : f_(f), blocks_((f.resolution() + block - 1) / block), occupied_(blocks_ * blocks_ * blocks_, 0)
+  {
+    const std::size_t n = f.resolution();
+    for(std::size_t k = 0; k < n; ++k)
+      for(std::size_t j = 0; j < n; ++j)
+        for(std::size_t i = 0; i < n; ++i) {
+          if(f(i, j, k) == 0.) continue;
+          // Sample (i,j,k) is used by interpolations from voxels i-1 and i along each axis.
+          for(std::size_t dk = 0; dk < 2 && dk <= k; ++dk)
+            for(std::size_t dj = 0; dj < 2 && dj <= j; ++dj)
+              for(std::size_t di = 0; di < 2 && di <= i; ++di)
+                occupied_[block_index(i - di, j - dj, k - dk)] = 1;
+        }
+  }
+
+  double operator()(double x, double y, double z) const
+  {
+    const double h = f_.voxel_size();
+    const auto& o = f_.origin();
+    const double u = (x - o[0]) / h - 0.5, v = (y - o[1]) / h - 0.5, w = (z - o[2]) / h - 0.5;
+    const long n = long(f_.resolution());
+    const long i = long(u + 1.) - 1, j = long(v + 1.) - 1, k = long(w + 1.) - 1; // floor for u > -1
+    if(i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < n &&
+       !occupied_[block_index(std::size_t(i), std::size_t(j), std::size_t(k))])
+      return 0.;
+    return f_.trilinear_value(x, y, z);
+  }
+
+private:
+  static constexpr std::size_t block = 4;
+  std::size_t block_index(std::size_t i, std::size_t j, std::size_t k) const
+  {
+    return ((k / block) * blocks_ + j / block) * blocks_ + i / block;
+  }
+
+  const Voxel_grid<GT>& f_;
+  std::size_t blocks_;
+  std::vector<char> occupied_;
+};
 
 enum class Estimator { PAIR_JACOBIAN, BOUNDED_WEIGHT, STRATIFIED_LINES };
 
@@ -154,11 +203,19 @@ private:
   {
     const std::size_t n = bins_.n;
     const std::size_t per_direction = (std::max<std::size_t>)(1, samples / (n * n));
-    std::vector<double> cumulative(voxels_.size());
+    // Voxels in Morton order: consecutive strata of the cumulative distribution are then
+    // compact regions of space, and systematic sampling spreads the points evenly on the shape.
+    std::vector<std::uint32_t> voxels = voxels_;
+    const std::size_t res = f_.resolution();
+    std::sort(voxels.begin(), voxels.end(), [res](std::uint32_t a, std::uint32_t b) {
+      return morton_code(a % res, a / res % res, a / (res * res)) < morton_code(b % res, b / res % res, b / (res * res));
+    });
+    std::vector<double> cumulative(voxels.size());
     double running = 0.;
-    for(std::size_t v = 0; v < voxels_.size(); ++v) cumulative[v] = running += f_.values()[voxels_[v]];
+    for(std::size_t v = 0; v < voxels.size(); ++v) cumulative[v] = running += f_.values()[voxels[v]];
     const double scale = sum_ / (double(per_direction) * sum_of_squares_);
     const Voxel_grid<GT> sharp = sharpened_for_trilinear_interpolation(f_);
+    const Sparse_trilinear_interpolation<GT> interpolate(sharp);
     const double step = bins_.offset_step(), support2 = support_ * support_;
     const auto& o = f_.origin();
     parallel_for(n * n, threads, [&](unsigned, std::size_t begin, std::size_t end) {
@@ -168,11 +225,12 @@ private:
         const std::array<double, 3> nrm = bins_.normal(direction / n, direction % n);
         double* line = values.data() + direction * n;
         std::fill_n(line, n, 0.);
+        auto stratum = cumulative.begin();
         for(std::size_t m = 0; m < per_direction; ++m) {
+          // Targets increase with m: each search starts where the previous one ended.
           const double target = (double(m) + offset) / double(per_direction) * running;
-          const std::size_t v = voxels_[std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), target) -
-                                                    cumulative.begin())];
-          const std::size_t res = f_.resolution();
+          stratum = std::lower_bound(stratum, cumulative.end() - 1, target);
+          const std::size_t v = voxels[std::size_t(stratum - cumulative.begin())];
           const double x[3] = {o[0] + (double(v % res) + 0.5) * h_ - bins_.center[0],
                                o[1] + (double(v / res % res) + 0.5) * h_ - bins_.center[1],
                                o[2] + (double(v / (res * res)) + 0.5) * h_ - bins_.center[2]};
@@ -186,13 +244,22 @@ private:
           const long last = (std::min)(long(n) - 1, long(std::floor(((s + reach) / 2. + bins_.radius) / step - 0.5)));
           for(long k = first; k <= last; ++k) {
             const double t = 2. * (bins_.offset(std::size_t(k)) - s);
-            line[k] += sharp.trilinear_value(bins_.center[0] + x[0] + t * nrm[0], bins_.center[1] + x[1] + t * nrm[1],
+            line[k] += interpolate(bins_.center[0] + x[0] + t * nrm[0], bins_.center[1] + x[1] + t * nrm[1],
                                           bins_.center[2] + x[2] + t * nrm[2]);
           }
         }
         for(std::size_t k = 0; k < n; ++k) line[k] *= scale;
       }
     });
+  }
+
+  static std::uint64_t morton_code(std::size_t i, std::size_t j, std::size_t k)
+  {
+    std::uint64_t code = 0;
+    for(int bit = 0; bit < 21; ++bit)
+      code |= (std::uint64_t((i >> bit) & 1) << (3 * bit)) | (std::uint64_t((j >> bit) & 1) << (3 * bit + 1)) |
+              (std::uint64_t((k >> bit) & 1) << (3 * bit + 2));
+    return code;
   }
 
   long voxel(double coordinate, int axis) const { return long(std::floor((coordinate - f_.origin()[axis]) / h_)); }
