@@ -203,12 +203,12 @@ private:
   {
     const std::size_t n = bins_.n;
     const std::size_t per_direction = (std::max<std::size_t>)(1, samples / (n * n));
-    // Voxels in Morton order: consecutive strata of the cumulative distribution are then
+    // Voxels in Hilbert-curve order: consecutive strata of the cumulative distribution are then
     // compact regions of space, and systematic sampling spreads the points evenly on the shape.
     std::vector<std::uint32_t> voxels = voxels_;
     const std::size_t res = f_.resolution();
     std::sort(voxels.begin(), voxels.end(), [res](std::uint32_t a, std::uint32_t b) {
-      return morton_code(a % res, a / res % res, a / (res * res)) < morton_code(b % res, b / res % res, b / (res * res));
+      return hilbert_index(a % res, a / res % res, a / (res * res)) < hilbert_index(b % res, b / res % res, b / (res * res));
     });
     std::vector<double> cumulative(voxels.size());
     double running = 0.;
@@ -253,12 +253,32 @@ private:
     });
   }
 
-  static std::uint64_t morton_code(std::size_t i, std::size_t j, std::size_t k)
+  // Position of voxel (i,j,k) along a Hilbert curve through the grid (J. Skilling,
+  // "Programming the Hilbert curve", 2004): consecutive voxels along it are neighbours.
+  static std::uint64_t hilbert_index(std::size_t i, std::size_t j, std::size_t k)
   {
-    std::uint64_t code = 0;
-    for(int bit = 0; bit < 21; ++bit)
-      code |= (std::uint64_t((i >> bit) & 1) << (3 * bit)) | (std::uint64_t((j >> bit) & 1) << (3 * bit + 1)) |
-              (std::uint64_t((k >> bit) & 1) << (3 * bit + 2));
+    constexpr int bits = 12;
+    std::uint32_t x[3] = {std::uint32_t(i), std::uint32_t(j), std::uint32_t(k)};
+    for(std::uint32_t q = 1u << (bits - 1); q > 1; q >>= 1) { // inverse undo of excess work
+      const std::uint32_t p = q - 1;
+      for(int a = 0; a < 3; ++a) {
+        if(x[a] & q)
+          x[0] ^= p;
+        else {
+          const std::uint32_t t = (x[0] ^ x[a]) & p;
+          x[0] ^= t;
+          x[a] ^= t;
+        }
+      }
+    }
+    for(int a = 1; a < 3; ++a) x[a] ^= x[a - 1]; // Gray encode
+    std::uint32_t t = 0;
+    for(std::uint32_t q = 1u << (bits - 1); q > 1; q >>= 1)
+      if(x[2] & q) t ^= q - 1;
+    for(int a = 0; a < 3; ++a) x[a] ^= t;
+    std::uint64_t code = 0; // interleave the transposed bits, most significant first
+    for(int bit = bits - 1; bit >= 0; --bit)
+      for(int a = 0; a < 3; ++a) code = (code << 1) | ((x[a] >> bit) & 1u);
     return code;
   }
 
