@@ -17,7 +17,7 @@ namespace CGAL {
 namespace Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformGridRef
 
 A cube of `n`×`n`×`n` samples of a scalar function of space, centred on the centre of mass
 of a shape and large enough to hold its bounding sphere: this placement does not depend on
@@ -44,9 +44,13 @@ public:
 
   /*!
   Creates a grid of `resolution`³ samples, all set to `value`, over the axis-aligned cube of
-  side `side_length` centred on `center`; `radius` is the radius of the shape the grid
-  represents (the largest distance from `center` to the shape).
-  \pre `resolution > 0`, `side_length > 0`, `radius >= 0`.
+  side `side_length` centred on `center`.
+  \param resolution the number \f$ n \f$ of samples along each axis
+  \param center the centre of the cube, usually the centre of mass of the shape
+  \param radius the radius of the shape the grid represents (the largest distance from `center` to the shape)
+  \param side_length the side of the cube
+  \param value the initial value of every sample
+  \throws std::invalid_argument unless `resolution > 0`, `side_length > 0` and `radius >= 0`.
   */
   Voxel_grid(std::size_t resolution, const Point_3& center, FT radius, FT side_length,
              double value = 0.)
@@ -60,28 +64,43 @@ public:
   }
 
   /// Number of samples along each axis.
+  /// \returns \f$ n \f$ (0 for a default-constructed grid)
   std::size_t resolution() const { return n_; }
-  /// Centre of the cube: the centre of mass of the shape.
+  /// Centre of the cube.
+  /// \returns the `center` given at construction: the centre of mass of the shape for the grids of this package
   const Point_3& center() const { return center_; }
-  /// Radius of the shape: the largest distance from `center()` to it.
+  /// Radius of the shape.
+  /// \returns the largest distance from `center()` to the shape, as given at construction
   double radius() const { return radius_; }
   /// Side length of the cube.
+  /// \returns the side of the cube, in the units of the points
   double side_length() const { return side_; }
   /// Distance between two neighbouring samples.
+  /// \returns `side_length() / resolution()`
   double voxel_size() const { return side_ / double(n_); }
 
   /// Position of sample `(i,j,k)` in the array returned by `values()`.
+  /// \param i,j,k the indices of the sample along \f$ x \f$, \f$ y \f$ and \f$ z \f$, each in \f$ [0, n) \f$
+  /// \returns \f$ (k n + j) n + i \f$
   std::size_t index(std::size_t i, std::size_t j, std::size_t k) const { return (k * n_ + j) * n_ + i; }
-  /// Sample `(i,j,k)`.
+  /// Sample `(i,j,k)`, for writing.
+  /// \param i,j,k the indices of the sample, each in \f$ [0, n) \f$ (not checked)
+  /// \returns a reference to the sample
   double& operator()(std::size_t i, std::size_t j, std::size_t k) { return values_[index(i, j, k)]; }
   /// Sample `(i,j,k)`.
+  /// \param i,j,k the indices of the sample, each in \f$ [0, n) \f$ (not checked)
+  /// \returns the value of the sample
   double operator()(std::size_t i, std::size_t j, std::size_t k) const { return values_[index(i, j, k)]; }
-  /// All samples, `i` fastest, then `j`, then `k`.
+  /// All samples, `i` fastest, then `j`, then `k`, for writing.
+  /// \returns the \f$ n^3 \f$ samples, sample `(i,j,k)` at position `index(i,j,k)`
   std::vector<double>& values() { return values_; }
   /// All samples, `i` fastest, then `j`, then `k`.
+  /// \returns the \f$ n^3 \f$ samples, sample `(i,j,k)` at position `index(i,j,k)`
   const std::vector<double>& values() const { return values_; }
 
   /// Position of sample `(i,j,k)`.
+  /// \param i,j,k the indices of the sample
+  /// \returns the centre of voxel `(i,j,k)`
   Point_3 point(std::size_t i, std::size_t j, std::size_t k) const
   {
     const double h = voxel_size();
@@ -90,6 +109,8 @@ public:
   }
 
   /// Trilinear interpolation of the samples at `p`; the function is taken as zero outside the grid.
+  /// \param p any point
+  /// \returns the interpolated value, 0 farther than one voxel outside the samples
   double value(const Point_3& p) const
   {
     return trilinear_value(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
@@ -111,7 +132,7 @@ public:
     const double h = voxel_size();
     const double u = (x - origin_[0]) / h - 0.5, v = (y - origin_[1]) / h - 0.5,
                  w = (z - origin_[2]) / h - 0.5;
-    const double fu = std::floor(u), fv = std::floor(v), fw = std::floor(w);
+    const double fu = floor_of(u), fv = floor_of(v), fw = floor_of(w);
     const long i = long(fu), j = long(fv), k = long(fw);
     const long n = long(n_);
     if(i < -1 || j < -1 || k < -1 || i >= n || j >= n || k >= n) return 0.;
@@ -142,7 +163,7 @@ public:
     const double h = voxel_size();
     const double u = (x - origin_[0]) / h - 0.5, v = (y - origin_[1]) / h - 0.5,
                  w = (z - origin_[2]) / h - 0.5;
-    const double fu = std::floor(u), fv = std::floor(v), fw = std::floor(w);
+    const double fu = floor_of(u), fv = floor_of(v), fw = floor_of(w);
     const long i = long(fu), j = long(fv), k = long(fw);
     const long n = long(n_);
     if(i < -2 || j < -2 || k < -2 || i > n || j > n || k > n) return 0.;
@@ -170,6 +191,13 @@ public:
   /// \endcond
 
 private:
+  // std::floor is a library call on x86-64 without SSE4.1; interpolation calls it millions of times.
+  static double floor_of(double x)
+  {
+    const double t = double(static_cast<long>(x));
+    return t > x ? t - 1. : t;
+  }
+
   static std::array<double, 4> catmull_rom_weights(double t)
   {
     const double t2 = t * t, t3 = t2 * t;

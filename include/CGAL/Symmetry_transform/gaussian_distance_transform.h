@@ -17,7 +17,7 @@ namespace CGAL {
 namespace Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformGridRef
 
 Computes the Gaussian Euclidean Distance Transform (GEDT) of a triangle mesh:
 the function \f$ f(x) = \exp(-d(x)^2 / 2\sigma^2) \f$, where \f$ d(x) \f$ is the distance
@@ -72,7 +72,7 @@ Degenerate faces (zero area) are ignored.
 \cgalNamedParamsEnd
 
 \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the surface
-and whose `radius()` is the largest distance from it to a vertex.
+and whose `radius()` is the largest distance from it to a vertex of a non-degenerate face.
 
 \throws std::invalid_argument if the mesh has no face, a face that is not a triangle, only
 degenerate faces, a coordinate that is NaN or infinite, or if the grid parameters are invalid
@@ -99,7 +99,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformGridRef
 
 Computes the Gaussian Euclidean Distance Transform of a point set: as
 `gaussian_distance_transform()`, with \f$ d(x) \f$ the distance to the nearest point (found
@@ -122,8 +122,11 @@ distance from the mean to a point.
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
+\returns the normalised GEDT on a grid whose `center()` is the mean of the points and whose
+`radius()` is the largest distance from it to a point.
+
 \throws std::invalid_argument if the range is empty, all its points coincide, a coordinate is
-NaN or infinite, or the grid parameters are invalid.
+NaN or infinite, or if the grid parameters are invalid or the grid does not fit in memory.
 */
 template <typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>

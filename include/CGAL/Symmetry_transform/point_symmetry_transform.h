@@ -12,6 +12,8 @@
 #include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/named_parameters.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -21,7 +23,7 @@ namespace CGAL {
 namespace Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPSTRef
 
 The Point Symmetry Transform (PST) of a function \f$ f \f$ sampled on a `Voxel_grid`: for every
 sample \f$ p \f$ of the grid, the symmetry measure of \f$ f \f$ with respect to the point
@@ -39,52 +41,89 @@ public:
   /// Point type of the traits.
   typedef typename GeomTraits::Point_3 Point_3;
 
-  /// Wraps a grid of symmetry measures, on the same samples as the function they measure.
-  explicit Point_symmetry_transform(Voxel_grid<GeomTraits> symmetry_measures)
-    : grid_(std::move(symmetry_measures))
+  /// Wraps a grid of symmetry measures, on the same samples as the function they measure,
+  /// and the point of strongest symmetry found when computing them.
+  /// \param symmetry_measures the symmetry measure of each sample of the grid
+  /// \param center_of_symmetry the point of largest symmetry measure
+  Point_symmetry_transform(Voxel_grid<GeomTraits> symmetry_measures, const Point_3& center_of_symmetry)
+    : grid_(std::move(symmetry_measures)), center_of_symmetry_(center_of_symmetry)
   {}
 
   /// The symmetry measure at each sample of the grid.
+  /// \returns the grid of symmetry measures, on the samples of the function it was computed from
   const Voxel_grid<GeomTraits>& grid() const { return grid_; }
 
   /// Symmetry measure with respect to `p`, interpolated trilinearly between samples.
+  /// \param p the centre of the point reflection
+  /// \returns \f$ SM(p) \f$, 0 outside the grid
   double value(const Point_3& p) const { return grid_.value(p); }
 
   /*!
-  The point of strongest point symmetry: the sample of largest symmetry measure, moved to the
-  maximum of the parabola through it and its two neighbours along each axis (sub-voxel accuracy).
+  The point of strongest point symmetry. `point_symmetry_transform()` finds it on a grid twice
+  as fine as `grid()` (the self-convolution it computes has a sample at every midpoint of two
+  samples of \f$ f \f$), then moves it by one Newton step on the logarithm of the measure,
+  with the gradient and full Hessian of the 3×3×3 samples around the best one: near a
+  symmetric centre the measure is close to a Gaussian, whose logarithm is quadratic.
+  \returns the centre of symmetry
   */
-  Point_3 center_of_symmetry() const
-  {
-    const std::vector<double>& v = grid_.values();
-    const std::size_t best = std::size_t(std::max_element(v.begin(), v.end()) - v.begin());
-    const std::size_t n = grid_.resolution();
-    const std::array<std::size_t, 3> ijk = {best % n, best / n % n, best / (n * n)};
-    std::array<double, 3> position;
-    for(int axis = 0; axis < 3; ++axis) {
-      std::array<long, 3> lo = {long(ijk[0]), long(ijk[1]), long(ijk[2])}, hi = lo;
-      --lo[axis];
-      ++hi[axis];
-      const double f0 = v[best], fm = grid_.sample_or_zero(lo[0], lo[1], lo[2]),
-                   fp = grid_.sample_or_zero(hi[0], hi[1], hi[2]);
-      const double curvature = fm - 2. * f0 + fp;
-      const double shift = curvature < 0. ? std::clamp(0.5 * (fm - fp) / curvature, -0.5, 0.5) : 0.;
-      position[axis] = grid_.origin()[axis] + (double(ijk[axis]) + 0.5 + shift) * grid_.voxel_size();
-    }
-    return Point_3(position[0], position[1], position[2]);
-  }
+  const Point_3& center_of_symmetry() const { return center_of_symmetry_; }
 
 private:
   Voxel_grid<GeomTraits> grid_;
+  Point_3 center_of_symmetry_;
 };
 
+namespace internal {
+
+// Offset of the maximum of exp(q), q the quadratic through the logarithms of the 27 values
+// sample(di, dj, dk), di, dj, dk in {-1, 0, 1}, around a largest sample; zero if the samples
+// do not curve down, and at most one step along each axis.
+template <typename Sample>
+Eigen::Vector3d newton_step_to_peak(const Sample& sample)
+{
+  auto log_sample = [&](const long* d) { return std::log((std::max)(sample(d[0], d[1], d[2]), 1e-300)); };
+  const long zero[3] = {0, 0, 0};
+  Eigen::Vector3d gradient;
+  Eigen::Matrix3d hessian;
+  for(int a = 0; a < 3; ++a)
+    for(int b = a + 1; b < 3; ++b) {
+      long pp[3] = {0, 0, 0}, pm[3] = {0, 0, 0}, mp[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
+      pp[a] = pm[a] = 1;
+      mp[a] = mm[a] = -1;
+      pp[b] = mp[b] = 1;
+      pm[b] = mm[b] = -1;
+      hessian(a, b) = hessian(b, a) = 0.25 * (log_sample(pp) - log_sample(pm) - log_sample(mp) + log_sample(mm));
+    }
+  for(int a = 0; a < 3; ++a) {
+    long p[3] = {0, 0, 0}, m[3] = {0, 0, 0};
+    p[a] = 1;
+    m[a] = -1;
+    gradient[a] = 0.5 * (log_sample(p) - log_sample(m));
+    hessian(a, a) = log_sample(p) - 2. * log_sample(zero) + log_sample(m);
+  }
+  if(!(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(hessian).eigenvalues().maxCoeff() < 0.))
+    return Eigen::Vector3d::Zero();
+  return (-hessian.inverse() * gradient).cwiseMax(-1.).cwiseMin(1.);
+}
+
+} // namespace internal
+
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPSTRef
 
 Computes the Point Symmetry Transform of a function sampled on a grid, for instance a GEDT
 from `gaussian_distance_transform()`: all the sums \f$ \sum_x f(x) f(2p - x) \f$ at once as
 the self-convolution of \f$ f \f$, by FFT on a grid zero-padded to \f$ (2n)^3 \f$ (no
 wrap-around), in \f$ O(n^3 \log n) \f$ time and \f$ 128\,n^3 \f$ bytes of memory.
+
+\tparam GeomTraits a model of `Kernel`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"; none is used
+        by this overload, which accepts them so that the overloads on meshes and point sets can
+        pass theirs on
+
+\param f the function, with \f$ n \f$ samples along each axis
+
+\returns the symmetry measure of every sample of `f`, on a grid with the same samples
 
 \throws std::invalid_argument if `f` is zero everywhere or the padded grid does not fit in memory.
 */
@@ -116,23 +155,53 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
   }
   fftw_execute(backward.get());
 
-  // (f*f)[a + b] pairs samples a and b, whose midpoint is sample (a + b)/2: keep even indices.
-  Voxel_grid<GeomTraits> result(f.resolution(), f.center(), f.radius(), f.side_length());
+  // (f*f)[m] sums the pairs of samples a, b with a + b = m, whose midpoint is at m/2 in sample
+  // units: the even indices are the samples of f, the odd ones the midpoints between them.
   const double scale = 1. / (double(real_size) * sum_of_squares);
+  auto convolution = [&](long i, long j, long k) {
+    const long last = 2 * n - 2;
+    if(i < 0 || j < 0 || k < 0 || i > last || j > last || k > last) return 0.;
+    return padded[(std::size_t(k) * N + std::size_t(j)) * N + std::size_t(i)] * scale;
+  };
+  Voxel_grid<GeomTraits> result(f.resolution(), f.center(), f.radius(), f.side_length());
   for(int k = 0; k < n; ++k)
     for(int j = 0; j < n; ++j)
-      for(int i = 0; i < n; ++i)
-        result(std::size_t(i), std::size_t(j), std::size_t(k)) =
-          padded[(std::size_t(2 * k) * N + 2 * j) * N + 2 * i] * scale;
-  return Point_symmetry_transform<GeomTraits>(std::move(result));
+      for(int i = 0; i < n; ++i) result(std::size_t(i), std::size_t(j), std::size_t(k)) = convolution(2 * i, 2 * j, 2 * k);
+
+  long best[3] = {0, 0, 0};
+  double best_value = -1.;
+  for(long k = 0; k <= 2 * n - 2; ++k)
+    for(long j = 0; j <= 2 * n - 2; ++j)
+      for(long i = 0; i <= 2 * n - 2; ++i)
+        if(convolution(i, j, k) > best_value) {
+          best_value = convolution(i, j, k);
+          best[0] = i; best[1] = j; best[2] = k;
+        }
+  const Eigen::Vector3d shift = internal::newton_step_to_peak(
+    [&](long di, long dj, long dk) { return convolution(best[0] + di, best[1] + dj, best[2] + dk); });
+  double position[3];
+  for(int a = 0; a < 3; ++a)
+    position[a] = f.origin()[a] + ((double(best[a]) + shift[a]) / 2. + 0.5) * f.voxel_size();
+  return Point_symmetry_transform<GeomTraits>(std::move(result),
+                                              typename GeomTraits::Point_3(position[0], position[1], position[2]));
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPSTRef
 
 Computes the Point Symmetry Transform of a triangle mesh: its GEDT by
 `gaussian_distance_transform(tm, np)`, then `point_symmetry_transform()` of that grid.
-The named parameters are those of `gaussian_distance_transform()`.
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param tm the input mesh
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
+          `gaussian_distance_transform()`
+
+\returns the Point Symmetry Transform of the GEDT of `tm`
+
+\throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Point_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -142,10 +211,21 @@ point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = par
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPSTRef
 
 Computes the Point Symmetry Transform of a point set: its GEDT by
 `gaussian_distance_transform_of_points(points, np)`, then `point_symmetry_transform()` of that grid.
+
+\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param points the input points
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
+          `gaussian_distance_transform_of_points()`
+
+\returns the Point Symmetry Transform of the GEDT of `points`
+
+\throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>

@@ -27,19 +27,20 @@ namespace CGAL {
 namespace Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPRSTRef
 How `reflective_symmetry_transform()` computes the symmetry measures of the bins.
 */
 enum class Reflective_symmetry_method {
-  /// Importance-sampled pairs of points vote for their bisector planes: \f$ O(N) \f$ for
-  /// \f$ N \f$ pairs; the bin values are bin averages with noise falling as \f$ 1/\sqrt{N} \f$.
+  /// Monte Carlo sampling of points drawn proportionally to \f$ f \f$, with the estimator given by
+  /// the named parameter `monte_carlo_estimator`: \f$ O(N) \f$ for \f$ N \f$ samples
+  /// (\f$ O(N n) \f$ for `Monte_carlo_estimator::STRATIFIED_LINES`).
   MONTE_CARLO,
   /// One self-convolution per normal direction by FFT, \f$ O(n^5 \log n) \f$: the reference.
   EXACT
 };
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPRSTRef
 The Monte Carlo estimator used by `Reflective_symmetry_method::MONTE_CARLO`.
 */
 enum class Monte_carlo_estimator {
@@ -57,7 +58,7 @@ enum class Monte_carlo_estimator {
 };
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPRSTRef
 
 The Planar Reflective Symmetry Transform (PRST) of a function \f$ f \f$ (usually the GEDT of a
 shape): the symmetry measure
@@ -88,7 +89,10 @@ public:
   typedef std::array<std::size_t, 3> Bin;
 
   /// Creates a transform with `resolution`³ bins, all zero, for a shape of centre `center` and radius `radius`.
-  /// \pre `resolution` is even and positive, `radius > 0`.
+  /// \param resolution the number \f$ n \f$ of bins along each of \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$
+  /// \param center the centre \f$ c \f$ from which the offsets of the planes are measured
+  /// \param radius the radius \f$ R \f$ of the shape
+  /// \throws std::invalid_argument unless `resolution` is even and positive and `radius > 0`.
   Reflective_symmetry_transform(std::size_t resolution, const Point_3& center, double radius)
     : center_(center),
       bins_{resolution, {CGAL::to_double(center.x()), CGAL::to_double(center.y()), CGAL::to_double(center.z())}, radius},
@@ -101,25 +105,40 @@ public:
   }
 
   /// Number \f$ n \f$ of bins along each of \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$.
+  /// \returns \f$ n \f$
   std::size_t resolution() const { return bins_.n; }
   /// Centre \f$ c \f$ of the shape, from which plane offsets are measured.
+  /// \returns \f$ c \f$
   const Point_3& center() const { return center_; }
   /// Radius \f$ R \f$ of the shape: offsets lie in \f$ [-R, R] \f$.
+  /// \returns \f$ R \f$
   double radius() const { return bins_.radius; }
 
   /// \f$ \theta \f$ at the centre of the bins of index `i`.
+  /// \param i a bin index along \f$ \theta \f$, in \f$ [0, n) \f$
+  /// \returns \f$ (i + 1/2)\,\Delta\theta \f$, in radians
   double theta(std::size_t i) const { return bins_.theta(i); }
   /// \f$ \phi \f$ at the centre of the bins of index `j`.
+  /// \param j a bin index along \f$ \phi \f$, in \f$ [0, n) \f$
+  /// \returns \f$ (j + 1/2)\,\Delta\phi \f$, in radians
   double phi(std::size_t j) const { return bins_.phi(j); }
   /// \f$ r \f$ at the centre of the bins of index `k`.
+  /// \param k a bin index along \f$ r \f$, in \f$ [0, n) \f$
+  /// \returns \f$ -R + (k + 1/2)\,\Delta r \f$
   double offset(std::size_t k) const { return bins_.offset(k); }
 
   /// Symmetry measure of bin `(i,j,k)`.
+  /// \param i,j,k the bin indices along \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$, each in \f$ [0, n) \f$ (not checked)
+  /// \returns the value of the bin
   double value(std::size_t i, std::size_t j, std::size_t k) const { return values_[bins_.index(i, j, k)]; }
   /// Symmetry measure of bin `b`.
+  /// \param b the bin
+  /// \returns the value of the bin
   double value(const Bin& b) const { return value(b[0], b[1], b[2]); }
 
   /// The plane at the centre of bin `(i,j,k)`, with a unit normal.
+  /// \param i,j,k the bin indices along \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$
+  /// \returns the plane \f$ \mathbf{n}(\theta_i,\phi_j)\cdot(x - c) = r_k \f$, oriented by \f$ \mathbf{n} \f$
   Plane_3 plane(std::size_t i, std::size_t j, std::size_t k) const
   {
     const std::array<double, 3> nrm = bins_.normal(i, j);
@@ -127,9 +146,13 @@ public:
     return Plane_3(nrm[0], nrm[1], nrm[2], -d);
   }
   /// The plane at the centre of bin `b`.
+  /// \param b the bin
+  /// \returns the plane at the centre of `b`, with a unit normal
   Plane_3 plane(const Bin& b) const { return plane(b[0], b[1], b[2]); }
 
   /// The bin containing `plane`, whose offset must lie in \f$ [-R, R] \f$.
+  /// \param plane any plane; its orientation does not matter
+  /// \returns the bin whose cell contains the parameters \f$ (\theta, \phi, r) \f$ of `plane`
   /// \throws std::invalid_argument if the plane is degenerate or farther than \f$ R \f$ from the centre.
   Bin bin(const Plane_3& plane) const
   {
@@ -141,6 +164,8 @@ public:
 
   /// Symmetry measure of any `plane` within \f$ R \f$ of the centre, interpolated trilinearly
   /// between bin centres, across the wraps of \f$ \phi \f$, the pole and the equator.
+  /// \param plane any plane; its orientation does not matter
+  /// \returns the interpolated symmetry measure
   /// \throws std::invalid_argument if the plane is degenerate or farther than \f$ R \f$ from the centre.
   double value(const Plane_3& plane) const
   {
@@ -157,6 +182,7 @@ public:
   }
 
   /// The bin of largest symmetry measure.
+  /// \returns the first bin, in the order of `values()`, whose value is the largest
   Bin maximum() const
   {
     const std::size_t best = std::size_t(std::max_element(values_.begin(), values_.end()) - values_.begin());
@@ -165,11 +191,12 @@ public:
   }
 
   /*!
-  Writes to `out` every bin whose value exceeds those of its 26 neighbours (through the
-  wraps of \f$ \phi \f$, the pole and the equator; along \f$ r \f$ the bins at \f$ \pm R \f$
-  have fewer neighbours), strongest first, and returns the past-the-end iterator.
+  Writes to `out` every bin of positive value that exceeds those of its 26 neighbours
+  (through the wraps of \f$ \phi \f$, the pole and the equator; along \f$ r \f$ the bins at
+  \f$ \pm R \f$ have fewer neighbours), strongest first, and returns the past-the-end iterator.
   \tparam OutputIterator an output iterator accepting `Bin`
   \param out where the bins are written
+  \returns `out` past the last bin written
   */
   template <typename OutputIterator>
   OutputIterator local_maxima(OutputIterator out) const
@@ -189,23 +216,27 @@ public:
                 is_maximum = neighbour == bins_.index(std::size_t(i), std::size_t(j), std::size_t(k)) ||
                              values_[neighbour] < v;
               }
-          if(is_maximum) maxima.push_back({std::size_t(i), std::size_t(j), std::size_t(k)});
+          if(is_maximum && v > 0.) maxima.push_back({std::size_t(i), std::size_t(j), std::size_t(k)});
         }
     std::sort(maxima.begin(), maxima.end(), [&](const Bin& a, const Bin& b) { return value(a) > value(b); });
     return std::copy(maxima.begin(), maxima.end(), out);
   }
 
-  /// All bin values, `k` fastest, then `j`, then `i`.
+  /// All bin values, `k` fastest, then `j`, then `i`, for writing.
+  /// \returns the \f$ n^3 \f$ values, bin `(i,j,k)` at position \f$ (i n + j) n + k \f$
   std::vector<double>& values() { return values_; }
   /// All bin values, `k` fastest, then `j`, then `i`.
+  /// \returns the \f$ n^3 \f$ values, bin `(i,j,k)` at position \f$ (i n + j) n + k \f$
   const std::vector<double>& values() const { return values_; }
 
   /// Writes the transform in a binary format with a versioned header and a checksum.
+  /// \param os a stream opened in binary mode; its state tells whether the writing succeeded
   void save(std::ostream& os) const
   {
     internal::write_reflective_symmetry(os, bins_, values_);
   }
-  /// Writes the transform to the file `filename`.
+  /// Writes the transform to the file `filename`, in the format of `save(std::ostream&) const`.
+  /// \param filename the name of the file, created or overwritten
   /// \throws std::runtime_error if the file cannot be written.
   void save(const std::string& filename) const
   {
@@ -216,6 +247,8 @@ public:
   }
 
   /// Reads a transform written by `save()`.
+  /// \param is a stream opened in binary mode
+  /// \returns the transform read
   /// \throws std::runtime_error if the stream does not hold such a transform, is truncated or corrupt.
   static Reflective_symmetry_transform load(std::istream& is)
   {
@@ -227,6 +260,8 @@ public:
     return result;
   }
   /// Reads a transform from the file `filename`.
+  /// \param filename the name of a file written by `save()`
+  /// \returns the transform read
   /// \throws std::runtime_error if the file cannot be opened or does not hold a transform written by `save()`.
   static Reflective_symmetry_transform load(const std::string& filename)
   {
@@ -257,7 +292,7 @@ private:
 };
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPRSTRef
 
 Computes the Planar Reflective Symmetry Transform of a function sampled on a grid, usually
 the GEDT of a shape from `gaussian_distance_transform()`, with as many bins along
@@ -269,6 +304,8 @@ the GEDT of a shape from `gaussian_distance_transform()`, with as many bins alon
 \param f the function; its `center()` and `radius()` define the offsets of the planes
 \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
 
+\returns the transform, with `f.resolution()` bins along each axis, `center()` and `radius()` those of `f`
+
 \cgalNamedParamsBegin
   \cgalParamNBegin{prst_method}
     \cgalParamDescription{how the bins are computed}
@@ -276,7 +313,9 @@ the GEDT of a shape from `gaussian_distance_transform()`, with as many bins alon
     \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples (pairs of points, or point and plane)}
+    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
+                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
+                          plane for `BOUNDED_WEIGHT`}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{2,000,000}
   \cgalParamNEnd
@@ -302,7 +341,8 @@ the GEDT of a shape from `gaussian_distance_transform()`, with as many bins alon
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, or its radius is zero.
+\throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
+zero, or `number_of_samples` is 0 with the Monte Carlo method.
 */
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<GeomTraits>
@@ -344,11 +384,23 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPRSTRef
 
 Computes the Planar Reflective Symmetry Transform of a triangle mesh: its GEDT by
 `gaussian_distance_transform(tm, np)`, then `reflective_symmetry_transform()` of that grid.
-The named parameters are those of both functions; `grid_resolution` must be even.
+
+\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param tm the input mesh
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
+          `gaussian_distance_transform()` and of `reflective_symmetry_transform()` on grids;
+          `grid_resolution` must be even
+
+\returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
+bins along each axis, centred on the centre of mass of `tm`
+
+\throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -358,10 +410,22 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPRSTRef
 
 Computes the Planar Reflective Symmetry Transform of a point set: its GEDT by
 `gaussian_distance_transform_of_points(points, np)`, then `reflective_symmetry_transform()` of that grid.
+
+\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+
+\param points the input points
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
+          `gaussian_distance_transform_of_points()` and of `reflective_symmetry_transform()` on
+          grids; `grid_resolution` must be even
+
+\returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
+
+\throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>

@@ -43,7 +43,7 @@ double symmetry_measure_of_reflection(const Voxel_grid<GT>& f, const Reflection&
 } // namespace internal
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformMeasureRef
 
 Symmetry measure of a sampled function \f$ f \f$ with respect to the reflection \f$ \gamma \f$
 through `plane`, evaluated directly on the grid:
@@ -56,7 +56,14 @@ width 1.5 voxels), lower the less symmetric \f$ f \f$ is. It is the quantity the
 reflective symmetry transform tabulates for all planes; use this function to measure a
 given plane exactly, in \f$ O(n^3) \f$.
 
-\pre `plane` is not degenerate.
+\tparam GeomTraits a model of `Kernel`
+
+\param f the function, for instance a GEDT from `gaussian_distance_transform()`
+\param plane the plane of the reflection; its orientation does not matter
+
+\returns \f$ SM(\gamma) \f$
+
+\throws std::invalid_argument if `plane` is degenerate or `f` is zero everywhere.
 */
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Plane_3& plane)
@@ -74,11 +81,20 @@ double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTrai
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformMeasureRef
 
 Symmetry measure of a sampled function \f$ f \f$ with respect to the point reflection
 \f$ x \mapsto 2p - x \f$ through `center`, evaluated directly on the grid as in
 `symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`.
+
+\tparam GeomTraits a model of `Kernel`
+
+\param f the function
+\param center the centre \f$ p \f$ of the point reflection
+
+\returns \f$ \sum_x f(x)\, f(2p - x) / \sum_x f(x)^2 \f$
+
+\throws std::invalid_argument if `f` is zero everywhere.
 */
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Point_3& center)
@@ -90,11 +106,15 @@ double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTrai
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformMeasureRef
 
 The symmetry transform's value \f$ \sqrt{(1 + SM)/2} \f$ as defined in the thesis
 (Equation 3.1.1), from a symmetry measure \f$ SM \f$. It is a monotone function of
 \f$ SM \f$: thresholds and comparisons in this package use \f$ SM \f$ itself.
+
+\param symmetry_measure a symmetry measure \f$ SM \f$, in \f$ [-1, 1] \f$
+
+\returns \f$ \sqrt{(1 + SM)/2} \f$, in \f$ [0, 1] \f$
 */
 inline double symmetry_transform_value(double symmetry_measure)
 {

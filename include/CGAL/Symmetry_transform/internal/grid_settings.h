@@ -9,6 +9,7 @@
 #include <CGAL/Symmetry_transform/internal/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/shape_input.h>
 
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -59,7 +60,8 @@ Grid_settings grid_settings(const NamedParameters& np, double radius)
   using parameters::get_parameter;
   const long n = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), 64));
   const double sigma = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), 1.5));
-  const double margin = double(choose_parameter(get_parameter(np, internal_np::st_grid_margin), 0.));
+  const bool default_margin = parameters::is_default_parameter<NamedParameters, internal_np::st_grid_margin_t>::value;
+  const double margin = double(choose_parameter(get_parameter(np, internal_np::st_grid_margin), 1.));
   const unsigned threads = unsigned(
     choose_parameter(get_parameter(np, internal_np::st_number_of_threads), default_number_of_threads()));
   if(!(sigma > 0.))
@@ -67,12 +69,11 @@ Grid_settings grid_settings(const NamedParameters& np, double radius)
   const double tail = 2. * gaussian_cutoff_in_sigmas * sigma;
   if(n < 8 || double(n) <= 2. * tail)
     throw std::invalid_argument("Symmetry_transform: grid_resolution " + std::to_string(n) +
-                                " is too small: it must be at least 8 and more than " +
-                                std::to_string(2. * tail) + " (4 x 3 Gaussian widths)");
+                                " is too small: it must be at least 8 and more than 12 Gaussian widths (" +
+                                std::to_string(int(std::floor(2. * tail))) + ")");
   check_memory(2. * double(n) * double(n) * double(n) * sizeof(double), "a grid of this resolution");
-  if(margin != 0. && !(margin >= 1.))
-    throw std::invalid_argument("Symmetry_transform: grid_margin must be at least 1");
-  const double factor = margin != 0. ? margin : 1. / (1. - tail / double(n));
+  if(!(margin >= 1.)) throw std::invalid_argument("Symmetry_transform: grid_margin must be at least 1");
+  const double factor = default_margin ? 1. / (1. - tail / double(n)) : margin;
   return {std::size_t(n), sigma, 2. * radius * factor, (std::max)(1u, threads)};
 }
 
