@@ -58,7 +58,7 @@ public:
       side_(CGAL::to_double(side_length)), values_(resolution * resolution * resolution, value)
   {
     if(resolution == 0 || !(side_ > 0.) || !(radius_ >= 0.))
-      throw std::invalid_argument("Voxel_grid: the resolution and the side length must be positive");
+      throw std::invalid_argument("Voxel_grid: the resolution and the side length must be positive, the radius non-negative");
     origin_ = {CGAL::to_double(center.x()) - side_ / 2., CGAL::to_double(center.y()) - side_ / 2.,
                CGAL::to_double(center.z()) - side_ / 2.};
   }
@@ -132,6 +132,7 @@ public:
     const double h = voxel_size();
     const double u = (x - origin_[0]) / h - 0.5, v = (y - origin_[1]) / h - 0.5,
                  w = (z - origin_[2]) / h - 0.5;
+    if(!in_reach(u) || !in_reach(v) || !in_reach(w)) return 0.; // also NaN: far outside the grid
     const double fu = floor_of(u), fv = floor_of(v), fw = floor_of(w);
     const long i = long(fu), j = long(fv), k = long(fw);
     const long n = long(n_);
@@ -163,6 +164,7 @@ public:
     const double h = voxel_size();
     const double u = (x - origin_[0]) / h - 0.5, v = (y - origin_[1]) / h - 0.5,
                  w = (z - origin_[2]) / h - 0.5;
+    if(!in_reach(u) || !in_reach(v) || !in_reach(w)) return 0.; // also NaN: far outside the grid
     const double fu = floor_of(u), fv = floor_of(v), fw = floor_of(w);
     const long i = long(fu), j = long(fv), k = long(fw);
     const long n = long(n_);
@@ -191,6 +193,10 @@ public:
   /// \endcond
 
 private:
+  // Whether a continuous sample index can reach a sample (within 3 of the grid): beyond, the
+  // value is zero and the index may not even fit in a long.
+  bool in_reach(double u) const { return u > -3. && u < double(n_) + 2.; }
+
   // std::floor is a library call on x86-64 without SSE4.1; interpolation calls it millions of times.
   static double floor_of(double x)
   {

@@ -125,12 +125,15 @@ wrap-around), in \f$ O(n^3 \log n) \f$ time and \f$ 128\,n^3 \f$ bytes of memory
 
 \returns the symmetry measure of every sample of `f`, on a grid with the same samples
 
-\throws std::invalid_argument if `f` is zero everywhere or the padded grid does not fit in memory.
+\throws std::invalid_argument if `f` is zero everywhere, its resolution exceeds 512, or the padded grid does not fit in memory.
 */
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<GeomTraits>& f,
                                                               const NamedParameters& = parameters::default_values())
 {
+  // FFTW's basic interface counts samples in int: (2n)^3 must fit.
+  if(f.resolution() > 512)
+    throw std::invalid_argument("point_symmetry_transform: the resolution must be at most 512");
   const int n = int(f.resolution()), N = 2 * n;
   const std::size_t real_size = std::size_t(N) * N * N, complex_size = std::size_t(N) * N * (N / 2 + 1);
   internal::check_memory(double(real_size) * 8. + double(complex_size) * 16., "the point symmetry transform");

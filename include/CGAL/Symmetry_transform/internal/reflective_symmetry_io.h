@@ -89,6 +89,8 @@ inline void read_reflective_symmetry(std::istream& is, Plane_bins& bins, std::ve
   bins.n = std::size_t(n);
   get(bins.center.data(), sizeof(double) * 3);
   get(&bins.radius, sizeof(double));
+  for(double c : bins.center)
+    if(!std::isfinite(c)) throw std::runtime_error(what + "corrupt header (centre)");
   if(!(bins.radius > 0.) || !std::isfinite(bins.radius)) throw std::runtime_error(what + "corrupt header (radius)");
   values.resize(bins.n * bins.n * bins.n);
   get(values.data(), sizeof(double) * values.size());

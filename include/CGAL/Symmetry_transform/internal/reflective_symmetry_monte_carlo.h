@@ -89,7 +89,7 @@ public:
     std::vector<double> weights;
     for(std::size_t v = 0; v < f.values().size(); ++v)
       if(f.values()[v] > 0.) {
-        voxels_.push_back(std::uint32_t(v));
+        voxels_.push_back(v);
         weights.push_back(f.values()[v]);
         sum_ += f.values()[v];
         sum_of_squares_ += f.values()[v] * f.values()[v];
@@ -205,9 +205,9 @@ private:
     const std::size_t per_direction = (std::max<std::size_t>)(1, samples / (n * n));
     // Voxels in Hilbert-curve order: consecutive strata of the cumulative distribution are then
     // compact regions of space, and systematic sampling spreads the points evenly on the shape.
-    std::vector<std::uint32_t> voxels = voxels_;
+    std::vector<std::size_t> voxels = voxels_;
     const std::size_t res = f_.resolution();
-    std::sort(voxels.begin(), voxels.end(), [res](std::uint32_t a, std::uint32_t b) {
+    std::sort(voxels.begin(), voxels.end(), [res](std::size_t a, std::size_t b) {
       return hilbert_index(a % res, a / res % res, a / (res * res)) < hilbert_index(b % res, b / res % res, b / (res * res));
     });
     std::vector<double> cumulative(voxels.size());
@@ -287,7 +287,7 @@ private:
   const Voxel_grid<GT>& f_;
   Plane_bins bins_;
   double h_;
-  std::vector<std::uint32_t> voxels_;
+  std::vector<std::size_t> voxels_;
   boost::random::discrete_distribution<std::uint32_t, double> voxel_distribution_;
   double sum_ = 0., sum_of_squares_ = 0., support_ = 0.;
 };
