@@ -2,7 +2,7 @@
 # Builds the examples (Release) and runs the main demo on CGAL's bull.off; extra arguments
 # are passed to the program. Output files land in build/demo/.
 set -euo pipefail
-DEMO=reflective_symmetry_transform   # the demo program (an example of examples/Symmetry_transform)
+DEMO=principal_symmetries   # the demo program (an example of examples/Symmetry_transform)
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 BUILD=$ROOT/build

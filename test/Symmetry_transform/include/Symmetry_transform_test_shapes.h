@@ -12,12 +12,16 @@
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/clip.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/transform.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/convex_hull_3.h>
 
@@ -27,6 +31,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -170,6 +175,195 @@ Shape<Mesh> centrally_symmetric_hull(unsigned seed = 2)
   s.mesh = hull_with_images<Mesh>(points, [](const Point_3& p) { return CGAL::ORIGIN - (p - CGAL::ORIGIN); });
   s.center = CGAL::ORIGIN;
   return s;
+}
+
+// `mesh` rebuilt with its vertices and faces in lexicographic order, each face starting at its
+// smallest vertex. convex_hull_3 (CGAL 5.5) orders its output through a std::map keyed by vertex
+// handles, i.e. by heap addresses: the same points can give the faces in another order from one
+// run to the next, and with them other surface samples.
+template <typename Mesh>
+void make_canonical(Mesh& mesh)
+{
+  std::vector<std::array<Point_3, 3>> triangles;
+  for(auto f : faces(mesh)) {
+    std::array<Point_3, 3> t;
+    auto h = halfedge(f, mesh);
+    for(Point_3& p : t) {
+      p = get(CGAL::vertex_point, mesh, source(h, mesh));
+      h = next(h, mesh);
+    }
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    triangles.push_back(t);
+  }
+  std::sort(triangles.begin(), triangles.end());
+  std::vector<Point_3> points;
+  for(const auto& t : triangles) points.insert(points.end(), t.begin(), t.end());
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  std::vector<std::array<std::size_t, 3>> polygons;
+  for(const auto& t : triangles) {
+    std::array<std::size_t, 3> polygon;
+    for(int i = 0; i < 3; ++i)
+      polygon[i] = std::size_t(std::lower_bound(points.begin(), points.end(), t[i]) - points.begin());
+    polygons.push_back(polygon);
+  }
+  CGAL::clear(mesh);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+}
+
+// No symmetry at all: the convex hull of `count` random points in the cube [-1,1]^3 (in a
+// canonical order, see make_canonical).
+template <typename Mesh>
+Shape<Mesh> random_hull(unsigned seed = 3, int count = 30)
+{
+  CGAL::Random rng(seed);
+  std::vector<Point_3> points;
+  for(int i = 0; i < count; ++i)
+    points.emplace_back(rng.get_double(-1., 1.), rng.get_double(-1., 1.), rng.get_double(-1., 1.));
+  Shape<Mesh> s;
+  CGAL::convex_hull_3(points.begin(), points.end(), s.mesh);
+  make_canonical(s.mesh);
+  return s;
+}
+
+// The disjoint union of two shapes in one mesh, with the planes of both.
+template <typename Mesh>
+Shape<Mesh> merged(const Shape<Mesh>& a, const Shape<Mesh>& b)
+{
+  Shape<Mesh> s = a;
+  CGAL::copy_face_graph(b.mesh, s.mesh);
+  s.planes.insert(s.planes.end(), b.planes.begin(), b.planes.end());
+  s.center.reset();
+  return s;
+}
+
+// `count` points uniformly distributed on the surface of a triangle mesh, drawn from `rng` alone.
+// (CGAL 5.5's Random_points_in_triangle_mesh_3 picks the triangle with the given generator but
+// the point in it with CGAL::get_default_random(), whose state depends on what ran before.)
+template <typename Mesh>
+std::vector<Point_3> surface_points(const Mesh& mesh, std::size_t count, CGAL::Random& rng)
+{
+  std::vector<std::array<Point_3, 3>> triangles;
+  std::vector<double> cumulative_area;
+  double total = 0.;
+  for(auto f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    triangles.push_back({get(CGAL::vertex_point, mesh, source(h, mesh)), get(CGAL::vertex_point, mesh, target(h, mesh)),
+                         get(CGAL::vertex_point, mesh, target(next(h, mesh), mesh))});
+    const auto& t = triangles.back();
+    cumulative_area.push_back(total += std::sqrt(CGAL::squared_area(t[0], t[1], t[2])));
+  }
+  std::vector<Point_3> points;
+  for(std::size_t i = 0; i < count; ++i) {
+    const std::size_t f = std::size_t(
+      std::upper_bound(cumulative_area.begin(), cumulative_area.end() - 1, rng.get_double(0., total)) -
+      cumulative_area.begin());
+    double u = rng.get_double(), v = rng.get_double();
+    if(u + v > 1.) {
+      u = 1. - u;
+      v = 1. - v;
+    }
+    const auto& t = triangles[f];
+    points.push_back(t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]));
+  }
+  return points;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Perturbations.
+// ---------------------------------------------------------------------------------------------
+
+// A standard normal deviate from `rng` (Box-Muller: the same sequence on every platform,
+// unlike std::normal_distribution).
+inline double gaussian(CGAL::Random& rng)
+{
+  const double u = 1. - rng.get_double(), v = rng.get_double(); // u in (0, 1]
+  return std::sqrt(-2. * std::log(u)) * std::cos(2. * CGAL_PI * v);
+}
+
+// Every vertex moved by an isotropic Gaussian of standard deviation `sigma` per coordinate.
+template <typename Mesh>
+void add_vertex_noise(Mesh& mesh, double sigma, CGAL::Random& rng)
+{
+  auto vpm = get(CGAL::vertex_point, mesh);
+  for(auto v : vertices(mesh)) {
+    const Point_3 p = get(vpm, v);
+    put(vpm, v, Point_3(p.x() + sigma * gaussian(rng), p.y() + sigma * gaussian(rng), p.z() + sigma * gaussian(rng)));
+  }
+}
+
+// The mesh with the part on the positive side of the plane through `normal` (not necessarily
+// unit) that leaves `fraction` of the area there cut away (faces split along the plane, the
+// cut left open); the offset of the plane is found by bisection.
+template <typename Mesh>
+Mesh cut_away(const Mesh& mesh, const Vector_3& normal, double fraction)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Vector_3 n = normal / std::sqrt(normal.squared_length());
+  double lo = std::numeric_limits<double>::max(), hi = -lo;
+  for(auto v : vertices(mesh)) {
+    const double h = (get(CGAL::vertex_point, mesh, v) - CGAL::ORIGIN) * n;
+    lo = (std::min)(lo, h);
+    hi = (std::max)(hi, h);
+  }
+  const double total = PMP::area(mesh);
+  Mesh kept;
+  for(int step = 0; step < 40; ++step) { // the kept area grows with the offset
+    const double offset = 0.5 * (lo + hi);
+    kept = mesh;
+    PMP::clip(kept, Plane_3(n.x(), n.y(), n.z(), -offset));
+    (PMP::area(kept) < (1. - fraction) * total ? lo : hi) = offset;
+  }
+  return kept;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Comparisons of planes.
+// ---------------------------------------------------------------------------------------------
+
+// Area-weighted centroid of a triangle mesh and the largest distance from it to a vertex: the
+// centre and radius of the package (DESIGN.md), computed independently.
+struct Center_and_radius
+{
+  Point_3 center;
+  double radius;
+};
+
+template <typename Mesh>
+Center_and_radius center_and_radius(const Mesh& mesh)
+{
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  double area = 0.;
+  Vector_3 sum(0, 0, 0);
+  for(auto f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    const Point_3 a = get(vpm, source(h, mesh)), b = get(vpm, target(h, mesh)), c = get(vpm, target(next(h, mesh), mesh));
+    const double w = std::sqrt(CGAL::squared_area(a, b, c));
+    area += w;
+    sum = sum + w * (CGAL::centroid(a, b, c) - CGAL::ORIGIN);
+  }
+  const Point_3 center = CGAL::ORIGIN + sum / area;
+  double r2 = 0.;
+  for(auto v : vertices(mesh)) r2 = (std::max)(r2, CGAL::squared_distance(center, get(vpm, v)));
+  return {center, std::sqrt(r2)};
+}
+
+// Angle in degrees between the normals of two planes, up to orientation: in [0, 90].
+inline double angle_between(const Plane_3& a, const Plane_3& b)
+{
+  const double c = std::abs(unit_normal(a) * unit_normal(b));
+  const Vector_3 s = CGAL::cross_product(unit_normal(a), unit_normal(b));
+  return std::atan2(std::sqrt(s.squared_length()), c) * 180. / CGAL_PI;
+}
+
+// Difference of the signed distances from `center` to two planes, the second plane oriented
+// as the first: how far apart the planes are near `center`.
+inline double offset_between(const Plane_3& a, const Plane_3& b, const Point_3& center)
+{
+  const Plane_3 ua = unit_plane(a), ub = unit_plane(b);
+  const double sign = ua.orthogonal_vector() * ub.orthogonal_vector() < 0. ? -1. : 1.;
+  const auto height = [&](const Plane_3& p) { return p.a() * center.x() + p.b() * center.y() + p.c() * center.z() + p.d(); };
+  return std::abs(height(ua) - sign * height(ub));
 }
 
 // ---------------------------------------------------------------------------------------------
