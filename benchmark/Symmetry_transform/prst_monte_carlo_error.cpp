@@ -20,10 +20,11 @@
 //
 // Usage: prst_monte_carlo_error [--meshes bull.off,armadillo.off] [--resolutions 32,64]
 //          [--estimators stratified,pair,bounded] [--samples 250000,500000,...]
-//          [--seeds 1] [--threads T]
+//          [--seeds 1] [--threads T] [--top K]
 // A mesh given as a bare name is looked for in SYMMETRY_TRANSFORM_DATA_DIR/meshes/; a name
 // with a '/' is a path. --seeds K repeats each run with seeds 0..K-1 and reports the mean
-// error (and the mean time).
+// error (and the mean time). --top K lists, after each table, the K largest bins of each
+// Monte Carlo transform (seed 0) with their exact values: where the error comes from.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -145,7 +146,7 @@ std::string bin_string(const PRST& t, std::size_t b)
   std::cerr << "usage: " << program
             << " [--meshes bull.off,armadillo.off] [--resolutions 32,64]"
                " [--estimators stratified,pair,bounded] [--samples 250000,500000,1000000,2000000,4000000,8000000]"
-               " [--seeds 1] [--threads T]\n";
+               " [--seeds 1] [--threads T] [--top K]\n";
   std::exit(2);
 }
 
@@ -158,6 +159,7 @@ int main(int argc, char** argv)
   std::vector<Estimator_choice> estimators(std::begin(all_estimators), std::end(all_estimators));
   std::vector<std::size_t> samples = {250000, 500000, 1000000, 2000000, 4000000, 8000000};
   unsigned seeds = 1, threads = (std::max)(1u, std::thread::hardware_concurrency());
+  std::size_t top = 0;
 
   for(int a = 1; a < argc; ++a) {
     const std::string option = argv[a];
@@ -183,6 +185,8 @@ int main(int argc, char** argv)
       seeds = unsigned((std::max)(1, std::stoi(value)));
     else if(option == "--threads")
       threads = unsigned((std::max)(1, std::stoi(value)));
+    else if(option == "--top")
+      top = std::size_t((std::max)(0, std::stoi(value)));
     else
       usage(argv[0]);
   }
@@ -223,6 +227,7 @@ int main(int argc, char** argv)
                    "| sum mc / sum exact | max bin vs exact | exact SM at MC max / exact max |\n"
                 << "|---|---:|---:|---:|---:|---:|---:|---:|:---:|---:|\n"
                 << std::flush;
+      std::string largest_bins;
       for(const Estimator_choice& e : estimators)
         for(std::size_t N : samples) {
           double time = 0., cpu = 0.;
@@ -245,6 +250,18 @@ int main(int argc, char** argv)
             same_max += best == exact_best;
             near_max += is_neighbour(exact, exact_best, best);
             chosen += exact.values()[best] / exact_max;
+            if(seed == 0 && top > 0) {
+              std::vector<std::size_t> order(mc.values().size());
+              for(std::size_t b = 0; b < order.size(); ++b) order[b] = b;
+              const std::size_t k = (std::min)(top, order.size());
+              std::partial_sort(order.begin(), order.begin() + std::ptrdiff_t(k), order.end(),
+                                [&](std::size_t a, std::size_t b) { return mc.values()[a] > mc.values()[b]; });
+              largest_bins += std::string("- ") + long_name(e.estimator) + ", " + std::to_string(N) + " samples:";
+              for(std::size_t r = 0; r < k; ++r)
+                largest_bins += " " + bin_string(exact, order[r]) + " " + format("%.3f", mc.values()[order[r]]) +
+                                " (exact " + format("%.3f", exact.values()[order[r]]) + ")" + (r + 1 < k ? ";" : "");
+              largest_bins += "\n";
+            }
           }
           const double k = double(seeds);
           std::cout << "| " << long_name(e.estimator) << " | " << N << " | " << format("%.3f", time / k) << " | "
@@ -257,6 +274,8 @@ int main(int argc, char** argv)
                     << " | " << format("%.4f", chosen / k) << " |\n"
                     << std::flush;
         }
+      if(top > 0)
+        std::cout << "\nLargest Monte Carlo bins (seed 0), bin (i,j,k) value (exact value):\n\n" << largest_bins;
     }
   }
   return 0;
