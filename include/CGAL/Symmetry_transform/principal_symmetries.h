@@ -89,16 +89,16 @@ std::vector<Eigen::Vector3d> surface_samples(const std::vector<Dtriangle>& trian
   std::vector<double> cumulative_area;
   double total = 0.;
   for(const Dtriangle& t : triangles) cumulative_area.push_back(total += std::sqrt(t.squared_area()));
-  std::vector<Eigen::Vector3d> samples;
+  std::vector<Dpoint> samples;
   for(std::size_t i = number_of_refinement_samples(np); i > 0; --i) {
     const std::size_t f = std::size_t(std::upper_bound(cumulative_area.begin(), cumulative_area.end() - 1,
                                                        random.get_double(0., total)) - cumulative_area.begin());
     double u = random.get_double(), v = random.get_double();
     if(u + v > 1.) { u = 1. - u; v = 1. - v; } // fold the parallelogram onto the triangle
     const Dtriangle& t = triangles[f];
-    samples.push_back(to_eigen(t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0])));
+    samples.push_back(t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]));
   }
-  return samples;
+  return isp_order(std::move(samples));
 }
 
 // A seeded random subset of the points.
@@ -110,9 +110,20 @@ std::vector<Eigen::Vector3d> point_samples(const std::vector<Dpoint>& points, co
   CGAL::Random random(seed);
   const std::size_t count = (std::min)(points.size(), number_of_refinement_samples(np));
   for(std::size_t i = 0; i < count; ++i) std::swap(chosen[i], chosen[i + std::size_t(random.get_int(0, int(chosen.size() - i)))]);
-  std::vector<Eigen::Vector3d> samples;
-  for(std::size_t i = 0; i < count; ++i) samples.push_back(to_eigen(chosen[i]));
-  return samples;
+  chosen.resize(count);
+  return isp_order(std::move(chosen));
+}
+
+// The PRST of a detection. Its maxima need only be located to a bin or two, ISP doing the
+// rest: 5e5 Monte Carlo samples suffice (a quarter of the transform's default) unless the
+// user chose a number.
+template <typename GT, typename NamedParameters>
+Reflective_symmetry_transform<GT> detection_transform(const Voxel_grid<GT>& gedt, const NamedParameters& np)
+{
+  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::number_of_samples_t>::value)
+    return reflective_symmetry_transform(gedt, np.number_of_samples(500000));
+  else
+    return reflective_symmetry_transform(gedt, np);
 }
 
 // Candidates of the PRST refined by ISP, kept if they stay near their bin, measured on the
@@ -141,38 +152,36 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
   // and the smoothing move maxima along flat ridges by a few bins, hence a reach of 3 bins.
   constexpr long unstable_reach = 3;
   std::vector<std::array<std::size_t, 3>> candidates = symmetry_candidates(prst, t, l);
-  if(candidates.size() > 4 * max_planes) candidates.resize(4 * max_planes); // weaker ones would be cut off
+  // Most candidates are dropped as duplicates or unstable; beyond a few per plane asked for, the
+  // weaker ones would be cut off anyway.
+  if(candidates.size() > 10 * max_planes) candidates.resize(10 * max_planes);
   for(const auto& bin : candidates) {
+    if(result.size() == max_planes) break;
     const auto start = std::chrono::steady_clock::now();
+    auto near_accepted = [&](const Dplane& plane, double factor) {
+      return std::any_of(accepted.begin(), accepted.end(),
+                         [&](const Dplane& p) { return same_plane(p, plane, factor * angle, factor * distance, center); });
+    };
+    // Stop refining as soon as the plane heads for an accepted one or out of reach of its bin.
+    auto abandon = [&](const Dplane& plane) {
+      return near_accepted(plane, 2.) || !stays_near_bin(prst, plane, bin, unstable_reach);
+    };
     const Isp_result coarse = iterative_symmetric_points(samples, to_dplane(prst.plane(bin)), matcher, settings,
-                                                         Isp_phase::COARSE);
+                                                         Isp_phase::COARSE, abandon);
     // The coarse phase stops within about a bin of the optimum: closer than two bins to an
     // accepted plane, the fine phase would only find that plane again.
-    const bool seen = std::any_of(accepted.begin(), accepted.end(), [&](const Dplane& p) {
-      return same_plane(p, coarse.plane, 2. * angle, 2. * distance, center);
-    });
+    const bool seen = near_accepted(coarse.plane, 2.);
     Isp_result refined = coarse;
-    const char* verdict = seen ? "same as an accepted plane" : nullptr;
-    if(verdict == nullptr) {
-      // Stop refining as soon as the plane heads for an accepted one or out of reach of its bin.
-      auto near_accepted = [&](const Dplane& plane, double factor) {
-        return std::any_of(accepted.begin(), accepted.end(),
-                           [&](const Dplane& p) { return same_plane(p, plane, factor * angle, factor * distance, center); });
-      };
-      refined = iterative_symmetric_points(samples, coarse.plane, matcher, settings, Isp_phase::FINE,
-                                           [&](const Dplane& plane) {
-                                             return near_accepted(plane, 2.) ||
-                                                    !stays_near_bin(prst, plane, bin, unstable_reach);
-                                           });
-      verdict = !stays_near_bin(prst, refined.plane, bin, unstable_reach) ? "left its bin"
-                : near_accepted(refined.plane, 2.)                          ? "same as an accepted plane"
-                : !(refined.support > 0.)                                   ? "no convergence"
-                                                                           : nullptr;
-    }
+    if(!seen)
+      refined = iterative_symmetric_points(samples, coarse.plane, matcher, settings, Isp_phase::FINE, abandon);
+    const char* verdict = seen || near_accepted(refined.plane, 2.)              ? "same as an accepted plane"
+                          : !stays_near_bin(prst, refined.plane, bin, unstable_reach) ? "left its bin"
+                          : !(refined.support > 0.)                                   ? "no convergence"
+                                                                                     : nullptr;
     if(verbose)
       std::cerr << "  candidate (" << bin[0] << "," << bin[1] << "," << bin[2] << ") SM " << prst.value(bin)
                 << ": ISP " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                << " s (" << coarse.iterations << " + " << (refined.iterations == coarse.iterations ? 0 : refined.iterations)
+                << " s (" << coarse.iterations << " + " << (seen ? 0u : refined.iterations)
                 << " iterations), support " << refined.support << (verdict ? ", dropped: " : ", accepted") << (verdict ? verdict : "")
                 << "\n";
     if(verdict != nullptr) continue;
@@ -223,7 +232,9 @@ with them, and its width sets the Gaussian weights of ISP), and
     \cgalParamDefault{20}
   \cgalParamNEnd
   \cgalParamNBegin{max_number_of_planes}
-    \cgalParamDescription{the largest number of planes returned}
+    \cgalParamDescription{the largest number of planes returned: the refinement of the
+                           candidates, in decreasing order of the transform, stops when this
+                           many planes have been accepted}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{10}
   \cgalParamNEnd
@@ -287,7 +298,7 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
   const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
   const Voxel_grid<GT> gedt = gaussian_distance_transform(tm, np);
   const internal::Triangle_matcher matcher(triangles);
-  return internal::refine_candidates(gedt, reflective_symmetry_transform(gedt, np), internal::surface_samples(triangles, np),
+  return internal::refine_candidates(gedt, internal::detection_transform(gedt, np), internal::surface_samples(triangles, np),
                                      matcher, np);
 }
 
@@ -310,7 +321,7 @@ detect_principal_symmetries_of_points(const PointRange& points, const NamedParam
   const std::vector<internal::Dpoint> samples = internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
   const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points(points, np);
   const internal::Point_matcher matcher(samples);
-  return internal::refine_candidates(gedt, reflective_symmetry_transform(gedt, np), internal::point_samples(samples, np),
+  return internal::refine_candidates(gedt, internal::detection_transform(gedt, np), internal::point_samples(samples, np),
                                      matcher, np);
 }
 

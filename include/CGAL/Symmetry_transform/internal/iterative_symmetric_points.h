@@ -17,6 +17,7 @@
 #include <CGAL/Symmetry_transform/internal/shape_input.h>
 
 #include <CGAL/AABB_traits.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -44,6 +45,20 @@ struct Dplane
 };
 
 inline Eigen::Vector3d to_eigen(const Dpoint& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+
+// Samples in the order ISP visits them: every eighth first (those of the coarse phase, spread
+// over the shape), then the others, each part along a Hilbert curve, so that consecutive
+// samples are close and the match of one is a good start for the search of the next.
+inline std::vector<Eigen::Vector3d> isp_order(std::vector<Dpoint> points)
+{
+  CGAL::hilbert_sort(points.begin(), points.end(), Dkernel(), CGAL::Hilbert_sort_median_policy());
+  std::vector<Eigen::Vector3d> ordered;
+  ordered.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); i += 8) ordered.push_back(to_eigen(points[i]));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(i % 8 != 0) ordered.push_back(to_eigen(points[i]));
+  return ordered;
+}
 
 // A plane of any kernel as a Dplane; throws if it is degenerate.
 template <typename Plane>
@@ -118,13 +133,13 @@ private:
 
 struct Isp_settings
 {
-  double sigma = 0.;            // width of the Gaussian weights
+  double sigma = 0.;            // width of the Gaussian weights of the support; the phases
+                                // of ISP weigh with multiples of it
   double radius = 0.;           // size of the shape, for the convergence test
   unsigned max_iterations = 20; // at most this many re-fits
   unsigned threads = 1;
-  bool sigma_is_base = true; // false while the coarse phase widens the weights
   // Whether a point is farther than 3 sigma from the shape (the GEDT is zero there): its
-  // weight is zero at width sigma, and the closest-point search, the costliest step, is skipped.
+  // weight is zero at widths up to sigma, and the closest-point search, the costliest step, is skipped.
   std::function<bool(const Eigen::Vector3d&)> beyond_band;
 };
 
@@ -143,10 +158,12 @@ struct Isp_sums
   Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();  // point-to-point (point set): 4 C_m - C_u
   Eigen::Vector3d midpoint_sum = Eigen::Vector3d::Zero();
-  double weight = 0.;
+  double weight = 0.;  // of the fit
+  double support = 0.; // weights at sigma itself
 
   void add(const Isp_sums& o)
   {
+    support += o.support;
     jtj += o.jtj;
     jtr += o.jtr;
     moments += o.moments;
@@ -155,25 +172,42 @@ struct Isp_sums
   }
 };
 
+// Matches kept from one iteration to the next: the searches for nearby queries start there.
+template <typename Matcher>
+struct Match_hints
+{
+  explicit Match_hints(std::size_t n) : hints(n), has_hint(n, 0) {}
+  std::vector<typename Matcher::Hint> hints;
+  std::vector<char> has_hint;
+};
+
+// The sums of the fit with weights of width `width` sigma.
 template <typename Matcher>
 Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane, const Matcher& matcher,
-                  const Isp_settings& settings, std::vector<typename Matcher::Hint>& hints,
-                  std::vector<char>& has_hint)
+                  const Isp_settings& settings, double width, Match_hints<Matcher>& match_hints)
 {
+  std::vector<typename Matcher::Hint>& hints = match_hints.hints;
+  std::vector<char>& has_hint = match_hints.has_hint;
+  const double sigma = width * settings.sigma;
   // Tangent basis of the normal: the Gauss-Newton unknowns are (rotation along t1, t2, offset).
   const Eigen::Vector3d& n = plane.normal;
   const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
   std::vector<Isp_sums> partial(settings.threads);
   parallel_for(samples.size(), settings.threads, [&](unsigned thread, std::size_t begin, std::size_t end) {
     Isp_sums& s = partial[thread];
+    std::size_t previous = end; // the last sample of the slice with a match
     for(std::size_t i = begin; i < end; ++i) {
       const Eigen::Vector3d& p = samples[i];
       const Eigen::Vector3d image = plane.reflect(p);
-      if(settings.sigma_is_base && settings.beyond_band && settings.beyond_band(image)) continue;
-      const auto match = matcher.closest(image, hints[i], has_hint[i] != 0);
+      if(width <= 1. && settings.beyond_band && settings.beyond_band(image)) continue;
+      // No match of its own yet: that of the previous sample, close by, is a good start.
+      if(!has_hint[i] && previous != end) hints[i] = hints[previous];
+      const auto match = matcher.closest(image, hints[i], has_hint[i] != 0 || previous != end);
       has_hint[i] = 1;
+      previous = i;
       const double d2 = (image - match.first).squaredNorm();
-      const double w = std::exp(-d2 / (2. * settings.sigma * settings.sigma));
+      s.support += std::exp(-d2 / (2. * settings.sigma * settings.sigma));
+      const double w = std::exp(-d2 / (2. * sigma * sigma));
       if(w < 1e-12) continue;
       s.weight += w;
       if(Matcher::has_normals) {
@@ -197,13 +231,14 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
   return total;
 }
 
-// One fit: the plane that best maps the samples onto their matches, from the current one.
+// One fit: the plane that best maps the samples onto their matches, from the current one,
+// its step multiplied by `step_factor` (over-relaxation).
 template <typename Matcher>
-bool refit(const Isp_sums& s, Dplane& plane)
+bool refit(const Isp_sums& s, Dplane& plane, double step_factor = 1.)
 {
   if(s.weight <= 0.) return false;
   if(Matcher::has_normals) {
-    const Eigen::Vector3d delta = s.jtj.ldlt().solve(-s.jtr);
+    const Eigen::Vector3d delta = step_factor * s.jtj.ldlt().solve(-s.jtr);
     if(!delta.allFinite()) return false;
     const Eigen::Vector3d t1 = plane.normal.unitOrthogonal(), t2 = plane.normal.cross(t1);
     plane.normal = (plane.normal + delta[0] * t1 + delta[1] * t2).normalized();
@@ -213,68 +248,138 @@ bool refit(const Isp_sums& s, Dplane& plane)
     // smallest eigenvalue of 4 C_m - C_u (moments centred on the weighted mean midpoint).
     const Eigen::Vector3d mean = s.midpoint_sum / s.weight;
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(s.moments - 4. * s.weight * mean * mean.transpose());
-    const Eigen::Vector3d normal = solver.eigenvectors().col(0);
-    plane.normal = normal.dot(plane.normal) < 0. ? Eigen::Vector3d(-normal) : normal;
-    plane.offset = plane.normal.dot(mean);
+    Eigen::Vector3d normal = solver.eigenvectors().col(0);
+    if(normal.dot(plane.normal) < 0.) normal = -normal;
+    const double offset = normal.dot(mean);
+    const Eigen::Vector3d relaxed = plane.normal + step_factor * (normal - plane.normal);
+    if(!(relaxed.norm() > 0.)) return false;
+    plane.normal = relaxed.normalized();
+    plane.offset += step_factor * (offset - plane.offset);
   }
   return true;
 }
 
-// ISP from `plane`, in two phases; `abandon` may stop the fine phase early (no convergence). The coarse phase, far from the optimum, uses an eighth of
-// the samples and wider weights (4 sigma, halved at each iteration down to sigma), so that
-// matches a few sigma away pull the plane too, until the plane moves by less than 5e-3. The
-// fine phase uses all samples and sigma, until the support stops growing: on a perfect
-// symmetry it tends to 1; on an approximate one it reaches a plateau where matches merely
-// switch between triangles.
+// ISP from `plane`, in two phases.
+//
+// The coarse phase, far from the optimum, uses an eighth of the samples and wider weights
+// (4 sigma, halved at each iteration down to sigma), so that matches a few sigma away pull the
+// plane too, until the plane moves by less than 5e-3 (within about a bin, 2e-2, of its limit).
+// A start that has not settled after 12 iterations is not near a maximum.
+//
+// The fine phase uses all samples and sigma, and stops when the support (the mean weight)
+// stops growing: on a perfect symmetry it tends to 1; on an approximate one it reaches a
+// plateau. There, plain ISP creeps along the flat ridge of the symmetry measure by steps of a
+// fraction of a degree, all in the same direction (bull.off: 6 degrees in 30 steps). The steps
+// are therefore over-relaxed (as for EM and ICP): doubled, up to 32 times, after each step that
+// raised the support; a step that did not is not taken, and the next one is half the last that
+// did. The support never decreases.
+//
+// `abandon` may stop either phase early (no convergence); the coarse phase asks it once its
+// weights are down to sigma.
 enum class Isp_phase { COARSE, FINE, BOTH };
 
+namespace isp {
+
+
+
 template <typename Matcher>
-Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& all_samples, Dplane plane,
+Isp_result coarse_phase(const std::vector<Eigen::Vector3d>& samples, Dplane plane, const Matcher& matcher,
+                        const Isp_settings& settings, Match_hints<Matcher>& hints,
+                        const std::function<bool(const Dplane&)>& abandon)
+{
+  constexpr unsigned max_iterations = 12; // widths 4, 2, 1, then a few more
+  double width = 1.;
+  for(unsigned iteration = 0; iteration < max_iterations; ++iteration) {
+    const Isp_sums s = isp_sums(samples, plane, matcher, settings, width, hints);
+    const Dplane previous = plane;
+    if(!refit<Matcher>(s, plane)) return {plane, 0., false, iteration + 1};
+    const double step = (plane.normal - previous.normal).norm() + std::abs(plane.offset - previous.offset) / settings.radius;
+    if(width == 1. && step < 5e-3) return {plane, s.weight / double(samples.size()), true, iteration + 1};
+    if(width == 1. && abandon && abandon(plane)) return {plane, 0., false, iteration + 1};
+    width = (std::max)(1., width / 2.);
+  }
+  return {plane, 0., false, max_iterations};
+}
+
+// Over-relaxed ISP with weights of width `width` sigma, from result.plane whose sums are
+// `start`, until a plain step after an overshoot gains less than `min_gain` (relative) in mean
+// weight, or a plain step gains nothing, or `max_iterations`; `result` receives the best plane,
+// its support (at sigma) and the iterations. Returns the sums of the best plane.
+template <typename Matcher>
+Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher,
+                        const Isp_settings& settings, double width, const Isp_sums& start, Match_hints<Matcher>& hints,
+                        const std::function<bool(const Dplane&)>& abandon, double min_gain, Isp_result& result)
+{
+  constexpr double max_step_factor = 32.;
+  const double n = double(samples.size());
+  Isp_sums best = start;
+  result.support = best.support / n;
+  result.converged = false;
+  double step_factor = 1.;
+  bool overshot = false; // a relaxed step has lowered the mean weight: the plane is near the top
+  for(unsigned iteration = 1; iteration < settings.max_iterations; ++iteration) {
+    Dplane trial = result.plane;
+    if(!refit<Matcher>(best, trial, step_factor)) break;
+    if(abandon && abandon(trial)) {
+      result.plane = trial;
+      break;
+    }
+    const Isp_sums s = isp_sums(samples, trial, matcher, settings, width, hints);
+    ++result.iterations;
+    if(s.weight > best.weight) {
+      result.converged = overshot && step_factor == 1. && s.weight < best.weight * (1. + min_gain);
+      result.plane = trial;
+      result.support = s.support / n;
+      best = s;
+      step_factor = (std::min)(2. * step_factor, max_step_factor);
+    } else if(step_factor > 1.) {
+      step_factor = (std::max)(1., step_factor / 4.); // half the last step that gained
+      overshot = true;
+    } else {
+      result.converged = true;
+    }
+    if(result.converged) break;
+  }
+  return best;
+}
+
+} // namespace isp
+
+template <typename Matcher>
+Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane,
                                       const Matcher& matcher, const Isp_settings& settings,
                                       Isp_phase phases = Isp_phase::BOTH,
                                       const std::function<bool(const Dplane&)>& abandon = {})
 {
-  const std::vector<Eigen::Vector3d> coarse_samples(all_samples.begin(),
-                                                    all_samples.begin() + std::ptrdiff_t(all_samples.size() / 8));
-  bool coarse = phases != Isp_phase::FINE && coarse_samples.size() >= 100;
-  Isp_result best{plane, -1., false};
-  std::vector<typename Matcher::Hint> hints(all_samples.size());
-  std::vector<char> has_hint(all_samples.size(), 0);
-  double width = coarse ? 4. : 1.;
-  // Widths 4, 2, 1 then a few more: a candidate that has not settled by then is not a maximum.
-  constexpr unsigned coarse_iterations = 12;
-  for(unsigned iteration = 0; iteration < settings.max_iterations; ++iteration) {
-    if(coarse && iteration == coarse_iterations) return {plane, 0., false, iteration};
-    const std::vector<Eigen::Vector3d>& samples = coarse ? coarse_samples : all_samples;
-    Isp_settings current = settings;
-    current.sigma = settings.sigma * width;
-    current.sigma_is_base = width == 1.;
-    const Isp_sums s = isp_sums(samples, plane, matcher, current, hints, has_hint);
-    best.iterations = iteration + 1;
-    const double support = s.weight / double(samples.size());
-    if(!coarse) {
-      // A gain below 1e-6 is noise: on a perfect symmetry the plane is then within 1e-3 sigma.
-      if(support <= best.support * (1. + 1e-6)) {
-        best.converged = true;
-        break;
-      }
-      best.plane = plane;
-      best.support = support;
-    }
-    const Dplane previous = plane;
-    if(!refit<Matcher>(s, plane)) break;
-    if(!coarse && abandon && abandon(plane)) return {plane, support, false, iteration + 1};
-    const double step = (plane.normal - previous.normal).norm() + std::abs(plane.offset - previous.offset) / settings.radius;
-    width = (std::max)(1., width / 2.);
-    // Steps shrink by about 0.8 per iteration on approximate symmetries: below 5e-3 the plane
-    // is within about a bin (2e-2) of its limit, which is all the coarse phase is for.
-    if(coarse && width == 1. && step < 5e-3) {
-      if(phases == Isp_phase::COARSE) return {plane, support, true, iteration + 1};
-      coarse = false;
-    }
+  Match_hints<Matcher> hints(samples.size());
+  std::vector<Eigen::Vector3d> coarse_samples(samples.begin(), samples.begin() + std::ptrdiff_t(samples.size() / 8));
+  if(coarse_samples.size() < 100) coarse_samples.clear(); // too few to locate anything
+  Dplane start = plane;
+  unsigned coarse_iterations = 0;
+  if(phases != Isp_phase::FINE && !coarse_samples.empty()) {
+    const Isp_result coarse = isp::coarse_phase(coarse_samples, plane, matcher, settings, hints, abandon);
+    if(phases == Isp_phase::COARSE) return coarse;
+    // Not settled: the fine phase goes on from there all the same (a user's rough plane).
+    start = coarse.plane;
+    coarse_iterations = coarse.iterations;
   }
-  if(best.support < 0.) best.support = 0.;
-  return best;
+  // A gain below 1e-4 after an overshoot: the top of a plateau, or, on a perfect symmetry, a
+  // plane within a few hundredths of a degree after the quadratic convergence of Gauss-Newton.
+  constexpr double min_gain = 1e-4;
+  Isp_result fine{start, 0., false, coarse_iterations};
+  Isp_sums last = isp::relaxed_ascent(samples, matcher, settings, 1., isp_sums(samples, start, matcher, settings, 1., hints),
+                                      hints, abandon, min_gain, fine);
+  // Narrower weights then sharpen an exact symmetry, whose matches are much closer than sigma:
+  // parts of the shape that it does not map, matched a fraction of sigma away, lose their say
+  // (a local symmetry beside another part). On an approximate symmetry, whose mean weight would
+  // drop, they would fit the plane to the few samples that match best: the plane stays.
+  for(const double width : {0.5, 0.25}) {
+    if(abandon && abandon(fine.plane)) break;
+    const Isp_sums narrower = isp_sums(samples, fine.plane, matcher, settings, width, hints);
+    if(narrower.weight < 0.85 * last.weight) break;
+    last = isp::relaxed_ascent(samples, matcher, settings, width, narrower, hints, abandon, min_gain, fine);
+  }
+  return fine;
 }
 
 } // namespace internal
