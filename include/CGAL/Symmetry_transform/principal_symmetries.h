@@ -170,18 +170,20 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
                                                          Isp_phase::COARSE, abandon);
     // The coarse phase stops within about a bin of the optimum: closer than two bins to an
     // accepted plane, the fine phase would only find that plane again.
-    const bool seen = near_accepted(coarse.plane, 2.);
+    // A start that the coarse phase cannot settle is on a slope or a ridge, not near a maximum;
+    // with no normals (a point set), the point-to-point fit creeps and needs the fine phase.
+    const bool seen = near_accepted(coarse.plane, 2.), settled = coarse.converged || !Matcher::has_normals;
     Isp_result refined = coarse;
-    if(!seen)
+    if(!seen && settled)
       refined = iterative_symmetric_points(samples, coarse.plane, matcher, settings, Isp_phase::FINE, abandon);
     const char* verdict = seen || near_accepted(refined.plane, 2.)              ? "same as an accepted plane"
                           : !stays_near_bin(prst, refined.plane, bin, unstable_reach) ? "left its bin"
-                          : !(refined.support > 0.)                                   ? "no convergence"
+                          : !settled || !(refined.support > 0.)                      ? "no convergence"
                                                                                      : nullptr;
     if(verbose)
       std::cerr << "  candidate (" << bin[0] << "," << bin[1] << "," << bin[2] << ") SM " << prst.value(bin)
                 << ": ISP " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                << " s (" << coarse.iterations << " + " << (seen ? 0u : refined.iterations)
+                << " s (" << coarse.iterations << " + " << (seen || !settled ? 0u : refined.iterations)
                 << " iterations), support " << refined.support << (verdict ? ", dropped: " : ", accepted") << (verdict ? verdict : "")
                 << "\n";
     if(verdict != nullptr) continue;
@@ -206,10 +208,15 @@ the local maxima of `prst` whose symmetry measure exceeds \f$ t\,(1 - |r|/R) \f$
 negative discrete Laplacian exceeds \f$ l \f$, with \f$ t \f$ and \f$ l \f$ fractions of those
 of the strongest maximum, each refined by Iterative Symmetric Points (ISP): surface samples
 are reflected through the plane and matched to their closest points on the mesh
-(`CGAL::AABB_tree`), and the plane re-fitted by Gaussian-weighted least squares until it no
-longer moves. A candidate that moves more than 3 bins away from its bin is dropped (an
-unstable maximum); candidates that converge to the same plane are merged. The symmetry of
-each plane is then measured on the GEDT by `symmetry_measure()`.
+(`CGAL::AABB_tree`), and the plane re-fitted by least squares, with the Gaussian weights
+\f$ \exp(-d^2/2\sigma^2) \f$ of the match distances \f$ d \f$, until the weights stop growing.
+If the matches are then much closer than \f$ \sigma \f$ (an exact symmetry), the refinement goes
+on with weights of half and a quarter of that width, so that the parts of the shape the plane
+does not map lose their say: the local symmetries of a part of a composite shape come out
+exact. Candidates are refined in decreasing order of the transform. One that moves more than 3
+bins away from its bin, or that a first refinement on an eighth of the samples cannot settle
+(on a mesh), is dropped (an unstable maximum); candidates that converge to an accepted plane are merged. The
+symmetry of each plane is then measured on the GEDT by `symmetry_measure()`.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
@@ -226,8 +233,9 @@ with them, and its width sets the Gaussian weights of ISP), and
     \cgalParamDefault{10000}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of ISP iterations per plane; a plane still moving
-                           then (on a flat ridge of an approximate symmetry) is taken where it is}
+    \cgalParamDescription{the largest number of ISP iterations of each stage of a refinement; a
+                           plane still moving then (on a flat ridge of an approximate symmetry)
+                           is taken where it is}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{20}
   \cgalParamNEnd
@@ -283,7 +291,9 @@ principal_symmetries(
 
 Computes the principal symmetries of a triangle mesh: its reflective symmetry transform by
 `reflective_symmetry_transform(tm, np)`, then `principal_symmetries(tm, prst, np)`.
-The named parameters are those of both functions.
+The named parameters are those of both functions, except that `number_of_samples` (the Monte
+Carlo samples of the transform) defaults to \f$ 5 \cdot 10^5 \f$ here: the maxima need only be
+located within a bin or two, the refinement does the rest.
 \param tm the mesh
 \param np the named parameters
 \returns the principal symmetries, strongest first.
@@ -330,7 +340,9 @@ detect_principal_symmetries_of_points(const PointRange& points, const NamedParam
 
 Refines a rough plane of symmetry of a triangle mesh by Iterative Symmetric Points, as in
 `principal_symmetries()`, without a transform: the plane converges to the nearest local
-maximum of the symmetry measure.
+maximum of the Gaussian-weighted support (within `number_of_iterations` steps of each stage).
+A plane that is already an exact local symmetry, of a part of a composite shape for instance,
+stays where it is.
 \param tm the mesh
 \param plane the starting plane
 \param np named parameters: `number_of_refinement_samples`, `number_of_iterations`,

@@ -158,12 +158,14 @@ struct Isp_sums
   Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();  // point-to-point (point set): 4 C_m - C_u
   Eigen::Vector3d midpoint_sum = Eigen::Vector3d::Zero();
-  double weight = 0.;  // of the fit
-  double support = 0.; // weights at sigma itself
+  double weight = 0.;          // of the fit
+  double support = 0.;         // weights at sigma itself
+  double narrower_weight = 0.; // weights at half the width, w^4, of the same matches
 
   void add(const Isp_sums& o)
   {
     support += o.support;
+    narrower_weight += o.narrower_weight;
     jtj += o.jtj;
     jtr += o.jtr;
     moments += o.moments;
@@ -210,6 +212,7 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
       const double w = std::exp(-d2 / (2. * sigma * sigma));
       if(w < 1e-12) continue;
       s.weight += w;
+      s.narrower_weight += (w * w) * (w * w);
       if(Matcher::has_normals) {
         const Eigen::Vector3d& nu = match.second;
         const double height = n.dot(p) - plane.offset;
@@ -261,42 +264,39 @@ bool refit(const Isp_sums& s, Dplane& plane, double step_factor = 1.)
 
 // ISP from `plane`, in two phases.
 //
-// The coarse phase, far from the optimum, uses an eighth of the samples and wider weights
-// (4 sigma, halved at each iteration down to sigma), so that matches a few sigma away pull the
-// plane too, until the plane moves by less than 5e-3 (within about a bin, 2e-2, of its limit).
-// A start that has not settled after 12 iterations is not near a maximum.
+// The coarse phase uses an eighth of the samples, until the plane moves by less than 5e-3
+// (within about a bin, 2e-2, of its limit); a start that has not settled after 12 iterations is
+// not near a maximum. Its weights are those of the fine phase: wider ones would widen the reach
+// of ISP, but let a big part of a composite shape pull the plane of a small one away from it,
+// and the starts (bins of the transform, rough planes) are within a few sigma of their limit.
 //
-// The fine phase uses all samples and sigma, and stops when the support (the mean weight)
-// stops growing: on a perfect symmetry it tends to 1; on an approximate one it reaches a
-// plateau. There, plain ISP creeps along the flat ridge of the symmetry measure by steps of a
-// fraction of a degree, all in the same direction (bull.off: 6 degrees in 30 steps). The steps
-// are therefore over-relaxed (as for EM and ICP): doubled, up to 32 times, after each step that
-// raised the support; a step that did not is not taken, and the next one is half the last that
-// did. The support never decreases.
+// The fine phase uses all samples, and stops when the mean weight stops growing: on a perfect
+// symmetry it tends to 1; on an approximate one it reaches a plateau. There, plain ISP creeps
+// along the flat ridge of the symmetry measure by steps of a fraction of a degree, all in the
+// same direction (bull.off: about 0.1 degree per step, over several degrees). The steps are
+// therefore over-relaxed (as for EM and ICP): doubled, up to 32 times, after each step that
+// raised the mean weight; a step that did not is not taken, and the next one is half the last
+// that did. The mean weight never decreases. Then, on an exact symmetry, the weights narrow (see
+// iterative_symmetric_points()).
 //
-// `abandon` may stop either phase early (no convergence); the coarse phase asks it once its
-// weights are down to sigma.
+// `abandon` may stop either phase early (no convergence).
 enum class Isp_phase { COARSE, FINE, BOTH };
 
 namespace isp {
-
-
 
 template <typename Matcher>
 Isp_result coarse_phase(const std::vector<Eigen::Vector3d>& samples, Dplane plane, const Matcher& matcher,
                         const Isp_settings& settings, Match_hints<Matcher>& hints,
                         const std::function<bool(const Dplane&)>& abandon)
 {
-  constexpr unsigned max_iterations = 12; // widths 4, 2, 1, then a few more
-  double width = 1.;
+  constexpr unsigned max_iterations = 12;
   for(unsigned iteration = 0; iteration < max_iterations; ++iteration) {
-    const Isp_sums s = isp_sums(samples, plane, matcher, settings, width, hints);
+    const Isp_sums s = isp_sums(samples, plane, matcher, settings, 1., hints);
     const Dplane previous = plane;
     if(!refit<Matcher>(s, plane)) return {plane, 0., false, iteration + 1};
     const double step = (plane.normal - previous.normal).norm() + std::abs(plane.offset - previous.offset) / settings.radius;
-    if(width == 1. && step < 5e-3) return {plane, s.weight / double(samples.size()), true, iteration + 1};
-    if(width == 1. && abandon && abandon(plane)) return {plane, 0., false, iteration + 1};
-    width = (std::max)(1., width / 2.);
+    if(step < 5e-3) return {plane, s.support / double(samples.size()), true, iteration + 1};
+    if(abandon && abandon(plane)) return {plane, 0., false, iteration + 1};
   }
   return {plane, 0., false, max_iterations};
 }
@@ -374,10 +374,9 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   // (a local symmetry beside another part). On an approximate symmetry, whose mean weight would
   // drop, they would fit the plane to the few samples that match best: the plane stays.
   for(const double width : {0.5, 0.25}) {
-    if(abandon && abandon(fine.plane)) break;
-    const Isp_sums narrower = isp_sums(samples, fine.plane, matcher, settings, width, hints);
-    if(narrower.weight < 0.85 * last.weight) break;
-    last = isp::relaxed_ascent(samples, matcher, settings, width, narrower, hints, abandon, min_gain, fine);
+    if(last.narrower_weight < 0.85 * last.weight || (abandon && abandon(fine.plane))) break;
+    last = isp::relaxed_ascent(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints),
+                               hints, abandon, min_gain, fine);
   }
   return fine;
 }
