@@ -71,7 +71,7 @@ void add_plane_square(Mesh& mesh, const K::Plane_3& plane, const K::Point_3& cen
 int main(int argc, char** argv)
 try {
   std::string filename, prefix = "principal_symmetries";
-  std::size_t resolution = 64, samples = 2000000, seed = 0, planes = 6;
+  std::size_t resolution = 64, samples = 500000, seed = 0, planes = 6; // samples: detection's default
   for(int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if(arg.rfind("--", 0) != 0) { filename = arg; continue; }

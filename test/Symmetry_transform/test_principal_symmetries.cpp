@@ -325,13 +325,11 @@ TEST(PrincipalSymmetries, FindsAllPlanesOfAxisAlignedBoxIncludingThePolarOne)
 // Translation invariance: the box turned at random and moved 20 times its radius away from the
 // origin, by (20, -14, 8). All three planes must be found, within 0.1 degree and 0.1 % R from
 // the mesh (and within 0.5 degree and 0.5 % R from 5000 points on it, as in
-// OfPointsRecoversPlaneOfBoxFromSurfaceSamples). Measured (2026-11-22): for the three rotations
-// here, no plane at all from the mesh and at most one from the points (0 to 2 of the 3 planes
-// with other rotations), where the same shapes at the origin give all three:
-// candidates are "dropped: left its bin" after converging to a true plane, as stays_near_bin
-// compares, through same_plane, the offsets of the planes from the origin, not from the centre
-// of the transform (tilting a plane by a bin moves its offset from the origin by about the
-// distance to the origin times the angle: 3 bins' reach is exceeded far from the origin).
+// OfPointsRecoversPlaneOfBoxFromSurfaceSamples). It guards the comparison of planes in
+// stays_near_bin and same_plane, which must measure offsets from the centre of the transform:
+// from the origin, tilting a plane by a bin moves its offset by about the distance to the origin
+// times the angle, and far from the origin every candidate was "dropped: left its bin" (no
+// plane at all from the mesh, at most one from the points, in an earlier version).
 TEST(PrincipalSymmetries, FindsAllPlanesOfBoxFarFromTheOrigin)
 {
   CGAL::Random rng(215);

@@ -194,39 +194,50 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
   // Tangent basis of the normal: the Gauss-Newton unknowns are (rotation along t1, t2, offset).
   const Eigen::Vector3d& n = plane.normal;
   const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
-  std::vector<Isp_sums> partial(settings.threads);
-  parallel_for(samples.size(), settings.threads, [&](unsigned thread, std::size_t begin, std::size_t end) {
-    Isp_sums& s = partial[thread];
-    std::size_t previous = end; // the last sample of the slice with a match
-    for(std::size_t i = begin; i < end; ++i) {
-      const Eigen::Vector3d& p = samples[i];
-      const Eigen::Vector3d image = plane.reflect(p);
-      if(width <= 1. && settings.beyond_band && settings.beyond_band(image)) continue;
-      // No match of its own yet: that of the previous sample, close by, is a good start.
-      if(!has_hint[i] && previous != end) hints[i] = hints[previous];
-      const auto match = matcher.closest(image, hints[i], has_hint[i] != 0 || previous != end);
-      has_hint[i] = 1;
-      previous = i;
-      const double d2 = (image - match.first).squaredNorm();
-      s.support += std::exp(-d2 / (2. * settings.sigma * settings.sigma));
-      const double w = std::exp(-d2 / (2. * sigma * sigma));
-      if(w < 1e-12) continue;
-      s.weight += w;
-      s.narrower_weight += (w * w) * (w * w);
-      if(Matcher::has_normals) {
-        const Eigen::Vector3d& nu = match.second;
-        const double height = n.dot(p) - plane.offset;
-        // d(image)/d(normal) . delta = -2 ((delta . p) n + height delta); d(image)/d(offset) = 2 n
-        const Eigen::Vector3d jacobian(-2. * (t1.dot(p) * nu.dot(n) + height * nu.dot(t1)),
-                                       -2. * (t2.dot(p) * nu.dot(n) + height * nu.dot(t2)), 2. * nu.dot(n));
-        const double residual = nu.dot(image - match.first);
-        s.jtj += w * jacobian * jacobian.transpose();
-        s.jtr += w * residual * jacobian;
-      } else {
-        const Eigen::Vector3d m = 0.5 * (p + match.first), u = p - match.first;
-        s.moments += w * (4. * m * m.transpose() - u * u.transpose());
-        s.midpoint_sum += w * m;
-      }
+  // Adds sample i to the sums s; `previous` is the last sample of the same thread with a match.
+  const std::size_t none = samples.size();
+  auto add_sample = [&](std::size_t i, Isp_sums& s, std::size_t& previous) {
+    const Eigen::Vector3d& p = samples[i];
+    const Eigen::Vector3d image = plane.reflect(p);
+    if(width <= 1. && settings.beyond_band && settings.beyond_band(image)) return;
+    // No match of its own yet: that of the previous sample, close by, is a good start.
+    if(!has_hint[i] && previous != none) hints[i] = hints[previous];
+    const auto match = matcher.closest(image, hints[i], has_hint[i] != 0 || previous != none);
+    has_hint[i] = 1;
+    previous = i;
+    const double d2 = (image - match.first).squaredNorm();
+    s.support += std::exp(-d2 / (2. * settings.sigma * settings.sigma));
+    const double w = std::exp(-d2 / (2. * sigma * sigma));
+    if(w < 1e-12) return;
+    s.weight += w;
+    s.narrower_weight += (w * w) * (w * w);
+    if(Matcher::has_normals) {
+      const Eigen::Vector3d& nu = match.second;
+      const double height = n.dot(p) - plane.offset;
+      // d(image)/d(normal) . delta = -2 ((delta . p) n + height delta); d(image)/d(offset) = 2 n
+      const Eigen::Vector3d jacobian(-2. * (t1.dot(p) * nu.dot(n) + height * nu.dot(t1)),
+                                     -2. * (t2.dot(p) * nu.dot(n) + height * nu.dot(t2)), 2. * nu.dot(n));
+      const double residual = nu.dot(image - match.first);
+      s.jtj += w * jacobian * jacobian.transpose();
+      s.jtr += w * residual * jacobian;
+    } else {
+      const Eigen::Vector3d m = 0.5 * (p + match.first), u = p - match.first;
+      s.moments += w * (4. * m * m.transpose() - u * u.transpose());
+      s.midpoint_sum += w * m;
+    }
+  };
+  // The samples follow a Hilbert curve: contiguous slices would be regions of the shape, some
+  // mapped far from the surface (costly searches) and some onto it. Each thread takes every
+  // threads-th chunk instead, a fixed share, so that sums are reproducible.
+  constexpr std::size_t chunk = 64;
+  const std::size_t chunks = (samples.size() + chunk - 1) / chunk;
+  const unsigned threads = unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), chunks)));
+  std::vector<Isp_sums> partial(threads);
+  parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
+    std::size_t previous = none;
+    for(std::size_t c = thread; c < chunks; c += threads) {
+      for(std::size_t i = c * chunk; i < (std::min)((c + 1) * chunk, samples.size()); ++i)
+        add_sample(i, partial[thread], previous);
     }
   });
   Isp_sums total;
@@ -365,7 +376,7 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   }
   // A gain below 1e-4 after an overshoot: the top of a plateau, or, on a perfect symmetry, a
   // plane within a few hundredths of a degree after the quadratic convergence of Gauss-Newton.
-  constexpr double min_gain = 1e-4;
+  constexpr double min_gain = 1e-3;
   Isp_result fine{start, 0., false, coarse_iterations};
   Isp_sums last = isp::relaxed_ascent(samples, matcher, settings, 1., isp_sums(samples, start, matcher, settings, 1., hints),
                                       hints, abandon, min_gain, fine);
