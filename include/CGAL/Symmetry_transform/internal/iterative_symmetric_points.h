@@ -374,7 +374,7 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
     start = coarse.plane;
     coarse_iterations = coarse.iterations;
   }
-  // A gain below 1e-4 after an overshoot: the top of a plateau, or, on a perfect symmetry, a
+  // A gain below 1e-3 after an overshoot: the top of a plateau, or, on a perfect symmetry, a
   // plane within a few hundredths of a degree after the quadratic convergence of Gauss-Newton.
   constexpr double min_gain = 1e-3;
   Isp_result fine{start, 0., false, coarse_iterations};
