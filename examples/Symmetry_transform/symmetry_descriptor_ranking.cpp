@@ -152,6 +152,12 @@ try {
     if(entry.is_regular_file() && entry.path().extension() == ".off") files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   if(max_meshes > 0 && files.size() > max_meshes) files.resize(max_meshes);
+  // The query itself, if in the folder, is ranked too: it should come first, at distance 0.
+  const fs::path query_folder = fs::path(query).parent_path().empty() ? "." : fs::path(query).parent_path();
+  const bool query_in_folder = fs::exists(query) && fs::equivalent(query_folder, collection);
+  if(query_in_folder &&
+     std::none_of(files.begin(), files.end(), [&](const std::string& f) { return fs::equivalent(f, query); }))
+    files.push_back(query);
   std::cout << "Collection " << collection << ": " << files.size() << " meshes\n";
 
   // Symmetry frames and descriptors on resolution^3 grids, with `samples` Monte Carlo samples.
