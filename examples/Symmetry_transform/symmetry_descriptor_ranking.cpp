@@ -5,7 +5,7 @@
 // usage: symmetry_descriptor_ranking [query.off|.ply|.obj|.stl] [--collection DIR]
 //          [--max-meshes N] [--resolution N] [--samples N] [--seed S] [--index FILE] [--output FILE]
 // --collection: the folder whose .off files are ranked (default: the query's folder), the first
-//   N (--max-meshes, default 12; 0 = all) in sorted order;
+//   N (--max-meshes, default 12; 0 = all) in sorted order, and the query if it lies there;
 // --index: a file of descriptors, read if present and (re)written when meshes were added to it,
 //   so that a collection is indexed once (entries are keyed by path; a file edited since is not noticed);
 // --output: the ranked list, as text (rank, distances, file).
