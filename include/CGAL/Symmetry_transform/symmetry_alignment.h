@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -138,9 +139,9 @@ private:
 constexpr double balanced_moment = 1e-3;
 // The second plane: its normal within this angle of perpendicular to the first axis.
 constexpr double second_plane_tolerance_degrees = 10.;
-// The plane of the centre: its normal within this angle of the third axis (it crosses the line
-// of the first two planes at 45 degrees or more, so that the intersection is well defined).
-constexpr double center_plane_tolerance_degrees = 45.;
+// The plane of the centre: its normal within this angle of the third axis; otherwise it is
+// searched in the transform, with the third axis as normal (the thesis's rule).
+constexpr double center_plane_tolerance_degrees = 10.;
 
 // The eigenvectors of a symmetric matrix, largest eigenvalue first.
 inline std::array<Eigen::Vector3d, 3> principal_axes(const Eigen::Matrix3d& covariance)
@@ -192,16 +193,54 @@ inline Eigen_frame pca_frame(const Mass_distribution& mass)
   return {mass.center(), oriented_axes(principal_axes(mass.covariance()), mass.center(), mass)};
 }
 
-// The frame of the principal symmetries (strongest first), by the rules of symmetry_frame().
+struct Unit_plane
+{
+  Eigen::Vector3d normal; // unit
+  double d;               // normal . x + d = 0
+};
+
+// The strongest plane of the transform with unit normal n (the thesis's search for the plane
+// that fixes the centre of symmetry): offsets every quarter bin, within 98 % of the radius;
+// returns the plane and its value.
 template <typename GT>
-Eigen_frame symmetry_frame(const Mass_distribution& mass, const std::vector<Principal_symmetry<GT>>& symmetries)
+std::pair<Unit_plane, double> strongest_plane_of_normal(const Reflective_symmetry_transform<GT>& prst,
+                                                        const Eigen::Vector3d& n)
+{
+  const Plane_bins& bins = prst.bins();
+  const double n_dot_center = n.dot(Eigen::Vector3d(bins.center[0], bins.center[1], bins.center[2]));
+  const std::size_t steps = 4 * bins.n;
+  std::pair<Unit_plane, double> best{{n, 0.}, -std::numeric_limits<double>::infinity()};
+  for(std::size_t i = 0; i < steps; ++i) {
+    const double r = 0.98 * bins.radius * (2. * (double(i) + 0.5) / double(steps) - 1.);
+    const double value = prst.value(typename GT::Plane_3(n.x(), n.y(), n.z(), -(n_dot_center + r)));
+    if(value > best.second) best = {{n, -(n_dot_center + r)}, value};
+  }
+  return best;
+}
+
+// The strongest plane of the transform among those perpendicular to the unit vector `axis`
+// (the thesis's search for the second axis): normals every half degree.
+template <typename GT>
+Unit_plane strongest_plane_perpendicular_to(const Reflective_symmetry_transform<GT>& prst, const Eigen::Vector3d& axis)
+{
+  const Eigen::Vector3d e1 = axis.unitOrthogonal(), e2 = axis.cross(e1);
+  std::pair<Unit_plane, double> best{{e1, 0.}, -std::numeric_limits<double>::infinity()};
+  for(int step = 0; step < 360; ++step) {
+    const double t = step * CGAL_PI / 360.;
+    const std::pair<Unit_plane, double> candidate = strongest_plane_of_normal(prst, std::cos(t) * e1 + std::sin(t) * e2);
+    if(candidate.second > best.second) best = candidate;
+  }
+  return best.first;
+}
+
+// The frame of the principal symmetries (strongest first), by the rules of symmetry_frame();
+// with the transform, a missing second or third plane is searched in it, as the thesis does.
+template <typename GT>
+Eigen_frame symmetry_frame(const Mass_distribution& mass, const std::vector<Principal_symmetry<GT>>& symmetries,
+                           const Reflective_symmetry_transform<GT>* prst = nullptr)
 {
   if(symmetries.empty()) return pca_frame(mass);
-  struct Plane
-  {
-    Eigen::Vector3d normal; // unit
-    double d;               // normal . x + d = 0
-  };
+  typedef Unit_plane Plane;
   std::vector<Plane> planes;
   for(const Principal_symmetry<GT>& s : symmetries) {
     const Eigen::Vector3d n(CGAL::to_double(s.plane.a()), CGAL::to_double(s.plane.b()), CGAL::to_double(s.plane.c()));
@@ -219,6 +258,11 @@ Eigen_frame symmetry_frame(const Mass_distribution& mass, const std::vector<Prin
   const Plane* second = nullptr;
   for(std::size_t i = 1; i < planes.size() && second == nullptr; ++i)
     if(std::abs(planes[i].normal.dot(axes[0])) <= second_tolerance) second = &planes[i];
+  Plane searched_second, searched_third;
+  if(second == nullptr && prst != nullptr) {
+    searched_second = strongest_plane_perpendicular_to(*prst, axes[0]);
+    second = &searched_second;
+  }
 
   Eigen::Vector3d center;
   if(second != nullptr) {
@@ -228,6 +272,10 @@ Eigen_frame symmetry_frame(const Mass_distribution& mass, const std::vector<Prin
     for(std::size_t i = 1; i < planes.size() && third == nullptr; ++i)
       if(&planes[i] != second && std::abs(planes[i].normal.dot(axes[2])) >= center_tolerance)
         third = &planes[i];
+    if(third == nullptr && prst != nullptr) {
+      searched_third = strongest_plane_of_normal(*prst, axes[2]).first;
+      third = &searched_third;
+    }
     if(third != nullptr) { // the intersection of the three planes
       Eigen::Matrix3d n;
       n << first.normal.transpose(), second->normal.transpose(), third->normal.transpose();
@@ -286,16 +334,14 @@ axes and centre of symmetry, from the principal symmetries given by
   first axis, made exactly perpendicular to it (Gram-Schmidt).
 - Third axis: the cross product of the first two.
 - Centre of symmetry: the intersection of those two planes with the strongest remaining plane
-  whose normal is within 45 degrees of the third axis (a plane that crosses the line of the
-  first two at 45 degrees or more: the thesis asks for the plane perpendicular to both, which a
-  shape of revolution, a mug for instance, leaves undetermined among its many planes).
+  whose normal is within 10 degrees of the third axis.
 
-Fallbacks, so that every shape gets a frame: with no plane within 45 degrees of the third axis,
-the centre is the point of the line where the first two planes meet that is nearest to the
-centre of mass; with no plane within 10 degrees of perpendicular to the first axis, the second
-axis is the principal axis of largest variance of the surface projected on the first plane
-(see `pca_frame()`), and the centre is the centre of mass projected on the first plane; with no
-plane at all, the frame is `pca_frame(tm, np)`.
+When no principal plane qualifies, the planes are searched in the reflective symmetry transform
+itself, as the thesis does: with no plane within 10 degrees of perpendicular to the first axis,
+the second plane is the strongest plane of the transform whose normal is perpendicular to the
+first axis (normals every half degree, offsets every quarter bin); with no plane within 10
+degrees of the third axis, the centre lies on the strongest plane of the transform whose normal
+is the third axis. With no principal plane at all, the frame is `pca_frame(tm, np)`.
 
 Orientation: each axis \f$ a \f$ is turned towards more mass about the centre \f$ c \f$: so
 that the area-weighted mean of the signed squared distance \f$ s\,|s| \f$,
@@ -337,7 +383,14 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const internal::Mass_distribution mass = internal::mass_of_mesh(tm, np);
-  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detect_principal_symmetries(tm, np)));
+  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tm));
+  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
+  const Voxel_grid<GT> gedt = gaussian_distance_transform(tm, np);
+  const Reflective_symmetry_transform<GT> prst = internal::detection_transform(gedt, np);
+  const internal::Triangle_matcher matcher(triangles);
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(
+    mass, internal::refine_candidates(gedt, prst, internal::surface_samples(triangles, np), matcher, np), &prst));
 }
 
 /*!
@@ -377,8 +430,14 @@ Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParame
 symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   const internal::Mass_distribution mass = internal::mass_of_points(points, np);
-  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detect_principal_symmetries_of_points(points, np)));
+  const std::vector<internal::Dpoint> samples = internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points(points, np);
+  const Reflective_symmetry_transform<GT> prst = internal::detection_transform(gedt, np);
+  const internal::Point_matcher matcher(samples);
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(
+    mass, internal::refine_candidates(gedt, prst, internal::point_samples(samples, np), matcher, np), &prst));
 }
 
 /*!
