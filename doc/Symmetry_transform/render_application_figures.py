@@ -448,18 +448,5 @@ def main():
 
 
 if __name__ == "__main__":
-    if not os.environ.get("DISPLAY") and not os.environ.get("RENDER_FIGURES_UNDER_XVFB"):
-        # Debian's VTK needs an X server even off screen: provide a virtual one.
-        os.environ["RENDER_FIGURES_UNDER_XVFB"] = "1"
-        try:
-            os.execvp("xvfb-run", ["xvfb-run", "-a", "-s", "-screen 0 1920x1080x24",
-                                   sys.executable, os.path.abspath(__file__)] + sys.argv[1:])
-        except FileNotFoundError:
-            sys.exit("No DISPLAY and no xvfb-run: apt-get install xvfb xauth")
-    try:
-        import vtk
-    except ImportError:
-        sys.exit("No VTK for %s: apt-get install python3-vtk9, and run this script with Debian's "
-                 "/usr/bin/python3" % sys.executable)
-    rf.vtk = vtk  # render_figures imports VTK only when run as a script
+    vtk = rf.vtk_with_display(__file__)
     main()

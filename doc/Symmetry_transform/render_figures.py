@@ -352,18 +352,26 @@ def main():
                       os.path.join(FIG_DIR, "principal_symmetries_%s.png" % name))
 
 
-if __name__ == "__main__":
+def vtk_with_display(script):
+    """Imports VTK (into this module too) and returns it. Debian's VTK needs an X server even off
+    screen: without a DISPLAY, `script` runs again under xvfb-run and this call does not return."""
+    global vtk
     if not os.environ.get("DISPLAY") and not os.environ.get("RENDER_FIGURES_UNDER_XVFB"):
-        # Debian's VTK needs an X server even off screen: provide a virtual one.
         os.environ["RENDER_FIGURES_UNDER_XVFB"] = "1"
         try:
             os.execvp("xvfb-run", ["xvfb-run", "-a", "-s", "-screen 0 1920x1080x24",
-                                   sys.executable, os.path.abspath(__file__)] + sys.argv[1:])
+                                   sys.executable, os.path.abspath(script)] + sys.argv[1:])
         except FileNotFoundError:
             sys.exit("No DISPLAY and no xvfb-run: apt-get install xvfb xauth")
     try:
-        import vtk
+        import vtk as module
     except ImportError:
         sys.exit("No VTK for %s: apt-get install python3-vtk9, and run this script with Debian's "
                  "/usr/bin/python3" % sys.executable)
+    vtk = module
+    return vtk
+
+
+if __name__ == "__main__":
+    vtk_with_display(__file__)
     main()

@@ -198,6 +198,43 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
   return result;
 }
 
+// A detection and the transform it started from (the symmetry frame searches the transform too).
+template <typename GT>
+struct Detection
+{
+  std::vector<Principal_symmetry<GT>> symmetries;
+  Reflective_symmetry_transform<GT> prst;
+};
+
+template <typename TriangleMesh, typename NamedParameters>
+Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detection_of_mesh(const TriangleMesh& tm,
+                                                                                          const NamedParameters& np)
+{
+  typedef typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, tm));
+  const std::vector<Dtriangle> triangles = triangles_of_mesh(tm, vpm);
+  const Voxel_grid<GT> gedt = gaussian_distance_transform(tm, np);
+  Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
+  const Triangle_matcher matcher(triangles);
+  std::vector<Principal_symmetry<GT>> symmetries = refine_candidates(gedt, prst, surface_samples(triangles, np), matcher, np);
+  return {std::move(symmetries), std::move(prst)};
+}
+
+template <typename PointRange, typename NamedParameters>
+Detection<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+detection_of_points(const PointRange& points, const NamedParameters& np)
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits GT;
+  const std::vector<Dpoint> samples = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points(points, np);
+  Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
+  const Point_matcher matcher(samples);
+  std::vector<Principal_symmetry<GT>> symmetries = refine_candidates(gedt, prst, point_samples(samples, np), matcher, np);
+  return {std::move(symmetries), std::move(prst)};
+}
+
 } // namespace internal
 
 /*!
@@ -302,14 +339,7 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
 detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
-  const Voxel_grid<GT> gedt = gaussian_distance_transform(tm, np);
-  const internal::Triangle_matcher matcher(triangles);
-  return internal::refine_candidates(gedt, internal::detection_transform(gedt, np), internal::surface_samples(triangles, np),
-                                     matcher, np);
+  return internal::detection_of_mesh(tm, np).symmetries;
 }
 
 /*!
@@ -326,13 +356,7 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
 detect_principal_symmetries_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits GT;
-  const std::vector<internal::Dpoint> samples = internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
-  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points(points, np);
-  const internal::Point_matcher matcher(samples);
-  return internal::refine_candidates(gedt, internal::detection_transform(gedt, np), internal::point_samples(samples, np),
-                                     matcher, np);
+  return internal::detection_of_points(points, np).symmetries;
 }
 
 /*!

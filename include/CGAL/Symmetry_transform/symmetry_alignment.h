@@ -233,13 +233,12 @@ Unit_plane strongest_plane_perpendicular_to(const Reflective_symmetry_transform<
   return best.first;
 }
 
-// The frame of the principal symmetries (strongest first), by the rules of symmetry_frame();
-// with the transform, a missing second or third plane is searched in it, as the thesis does.
+// The frame of the principal symmetries (strongest first), by the rules of symmetry_frame(): a
+// second or third plane missing among them is searched in the transform, as the thesis does.
 template <typename GT>
 Eigen_frame symmetry_frame(const Mass_distribution& mass, const std::vector<Principal_symmetry<GT>>& symmetries,
-                           const Reflective_symmetry_transform<GT>* prst = nullptr)
+                           const Reflective_symmetry_transform<GT>& prst)
 {
-  if(symmetries.empty()) return pca_frame(mass);
   typedef Unit_plane Plane;
   std::vector<Plane> planes;
   for(const Principal_symmetry<GT>& s : symmetries) {
@@ -255,44 +254,21 @@ Eigen_frame symmetry_frame(const Mass_distribution& mass, const std::vector<Prin
   const Plane& first = planes.front();
   std::array<Eigen::Vector3d, 3> axes;
   axes[0] = first.normal;
-  const Plane* second = nullptr;
-  for(std::size_t i = 1; i < planes.size() && second == nullptr; ++i)
-    if(std::abs(planes[i].normal.dot(axes[0])) <= second_tolerance) second = &planes[i];
-  Plane searched_second, searched_third;
-  if(second == nullptr && prst != nullptr) {
-    searched_second = strongest_plane_perpendicular_to(*prst, axes[0]);
-    second = &searched_second;
-  }
-
-  Eigen::Vector3d center;
-  if(second != nullptr) {
-    axes[1] = (second->normal - second->normal.dot(axes[0]) * axes[0]).normalized();
-    axes[2] = axes[0].cross(axes[1]);
-    const Plane* third = nullptr;
-    for(std::size_t i = 1; i < planes.size() && third == nullptr; ++i)
-      if(&planes[i] != second && std::abs(planes[i].normal.dot(axes[2])) >= center_tolerance)
-        third = &planes[i];
-    if(third == nullptr && prst != nullptr) {
-      searched_third = strongest_plane_of_normal(*prst, axes[2]).first;
-      third = &searched_third;
-    }
-    if(third != nullptr) { // the intersection of the three planes
-      Eigen::Matrix3d n;
-      n << first.normal.transpose(), second->normal.transpose(), third->normal.transpose();
-      center = n.partialPivLu().solve(Eigen::Vector3d(-first.d, -second->d, -third->d));
-    } else { // the point of the line of the first two planes nearest to the centre of mass
-      Eigen::Matrix<double, 2, 3> n;
-      n << first.normal.transpose(), second->normal.transpose();
-      const Eigen::Vector2d residual = n * mass.center() + Eigen::Vector2d(first.d, second->d);
-      center = mass.center() - n.transpose() * (n * n.transpose()).inverse() * residual;
-    }
-  } else { // the principal axes of the mass projected on the first plane
-    const Eigen::Matrix3d p = Eigen::Matrix3d::Identity() - axes[0] * axes[0].transpose();
-    axes[1] = principal_axes(p * mass.covariance() * p)[0];
-    axes[1] = (axes[1] - axes[1].dot(axes[0]) * axes[0]).normalized();
-    axes[2] = axes[0].cross(axes[1]);
-    center = mass.center() - (first.normal.dot(mass.center()) + first.d) * first.normal;
-  }
+  const auto second = std::find_if(planes.begin() + 1, planes.end(), [&](const Plane& p) {
+    return std::abs(p.normal.dot(axes[0])) <= second_tolerance;
+  });
+  const Plane* found_second = second != planes.end() ? &*second : nullptr;
+  const Plane second_plane = found_second ? *found_second : strongest_plane_perpendicular_to(prst, axes[0]);
+  axes[1] = (second_plane.normal - second_plane.normal.dot(axes[0]) * axes[0]).normalized();
+  axes[2] = axes[0].cross(axes[1]);
+  const auto third = std::find_if(planes.begin() + 1, planes.end(), [&](const Plane& p) {
+    return &p != found_second && std::abs(p.normal.dot(axes[2])) >= center_tolerance;
+  });
+  const Plane third_plane = third != planes.end() ? *third : strongest_plane_of_normal(prst, axes[2]).first;
+  // The centre: the intersection of the three planes.
+  Eigen::Matrix3d n;
+  n << first.normal.transpose(), second_plane.normal.transpose(), third_plane.normal.transpose();
+  const Eigen::Vector3d center = n.partialPivLu().solve(Eigen::Vector3d(-first.d, -second_plane.d, -third_plane.d));
   return {center, oriented_axes(axes, center, mass)};
 }
 
@@ -383,14 +359,8 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const internal::Mass_distribution mass = internal::mass_of_mesh(tm, np);
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
-  const Voxel_grid<GT> gedt = gaussian_distance_transform(tm, np);
-  const Reflective_symmetry_transform<GT> prst = internal::detection_transform(gedt, np);
-  const internal::Triangle_matcher matcher(triangles);
-  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(
-    mass, internal::refine_candidates(gedt, prst, internal::surface_samples(triangles, np), matcher, np), &prst));
+  const internal::Detection<GT> detection = internal::detection_of_mesh(tm, np);
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detection.symmetries, detection.prst));
 }
 
 /*!
@@ -430,14 +400,9 @@ Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParame
 symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   const internal::Mass_distribution mass = internal::mass_of_points(points, np);
-  const std::vector<internal::Dpoint> samples = internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
-  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points(points, np);
-  const Reflective_symmetry_transform<GT> prst = internal::detection_transform(gedt, np);
-  const internal::Point_matcher matcher(samples);
-  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(
-    mass, internal::refine_candidates(gedt, prst, internal::point_samples(samples, np), matcher, np), &prst));
+  const internal::Detection<GT> detection = internal::detection_of_points(points, np);
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detection.symmetries, detection.prst));
 }
 
 /*!

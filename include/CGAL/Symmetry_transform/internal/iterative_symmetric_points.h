@@ -139,7 +139,8 @@ struct Isp_settings
   unsigned max_iterations = 20; // at most this many re-fits
   unsigned threads = 1;
   // Whether a point is farther than 3 sigma from the shape (the GEDT is zero there): its
-  // weight is zero at widths up to sigma, and the closest-point search, the costliest step, is skipped.
+  // weight is zero at the widths ISP uses (sigma and narrower), and the closest-point search, the
+  // costliest step, is skipped.
   std::function<bool(const Eigen::Vector3d&)> beyond_band;
 };
 
@@ -199,7 +200,7 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
   auto add_sample = [&](std::size_t i, Isp_sums& s, std::size_t& previous) {
     const Eigen::Vector3d& p = samples[i];
     const Eigen::Vector3d image = plane.reflect(p);
-    if(width <= 1. && settings.beyond_band && settings.beyond_band(image)) return;
+    if(settings.beyond_band && settings.beyond_band(image)) return;
     // No match of its own yet: that of the previous sample, close by, is a good start.
     if(!has_hint[i] && previous != none) hints[i] = hints[previous];
     const auto match = matcher.closest(image, hints[i], has_hint[i] != 0 || previous != none);
