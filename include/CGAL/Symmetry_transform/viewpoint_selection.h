@@ -12,8 +12,9 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -59,21 +60,14 @@ struct Kernel_of_symmetry_range
     decltype(std::begin(std::declval<const SymmetryRange&>()))>::value_type>::type type;
 };
 
-typedef std::array<double, 3> Vec3;
-
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-inline Vec3 cross(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+typedef Eigen::Vector3d Vec3;
 
 // v / |v|, or throws on a zero or non-finite vector.
 inline Vec3 unit(const Vec3& v, const char* what)
 {
-  const double l = std::sqrt(dot(v, v));
+  const double l = v.norm();
   if(!(l > 0.) || !std::isfinite(l)) throw std::invalid_argument(std::string("Symmetry_transform: ") + what);
-  return {v[0] / l, v[1] / l, v[2] / l};
+  return v / l;
 }
 
 // The principal planes as unit normals and weights M(u) > 0 (planes of zero measure add nothing).
@@ -101,7 +95,7 @@ struct Weighted_normals
   double score(const Vec3& v) const // v a unit vector
   {
     double s = 0.;
-    for(std::size_t k = 0; k < normals.size(); ++k) s += std::abs(dot(v, normals[k])) * weights[k];
+    for(std::size_t k = 0; k < normals.size(); ++k) s += std::abs(v.dot(normals[k])) * weights[k];
     return s;
   }
 
@@ -110,7 +104,7 @@ struct Weighted_normals
   {
     Vec3 w = {0., 0., 0.};
     for(std::size_t k = 0; k < normals.size(); ++k) {
-      const double d = dot(v, normals[k]);
+      const double d = v.dot(normals[k]);
       const double s = d > 0. ? weights[k] : (d < 0. ? -weights[k] : 0.);
       for(int i = 0; i < 3; ++i) w[i] += s * normals[k][i];
     }
@@ -125,12 +119,12 @@ struct Weighted_normals
     double s = score(v);
     for(int i = 0; i < 100; ++i) {
       const Vec3 w = linearisation(v);
-      const double l = std::sqrt(dot(w, w));
+      const double l = w.norm();
       if(!(l > 0.)) break;
-      const Vec3 next = {w[0] / l, w[1] / l, w[2] / l};
+      const Vec3 next = w / l;
       const double t = score(next);
       if(t < s) break; // rounding: keep the better one
-      const bool moved = dot(next, v) < 1. - 1e-15;
+      const bool moved = next.dot(v) < 1. - 1e-15;
       v = next;
       s = t;
       if(!moved) break;
@@ -144,7 +138,7 @@ inline Vec3 canonical_view(Vec3 v)
 {
   for(int i = 2; i >= 0; --i) {
     if(v[i] > 1e-12) return v;
-    if(v[i] < -1e-12) return {-v[0], -v[1], -v[2]};
+    if(v[i] < -1e-12) return -v;
   }
   return v;
 }
@@ -272,7 +266,7 @@ OutputIterator best_viewpoints(const SymmetryRange& symmetries, OutputIterator o
   for(std::size_t i = 0; i < n; ++i) {
     bool is_max = true;
     for(std::size_t j = (i > window ? i - window : 0); is_max && j < (std::min)(n, i + window + 1); ++j) {
-      if(j == i || internal::dot(samples[i], samples[j]) < cos_r) continue;
+      if(j == i || samples[i].dot(samples[j]) < cos_r) continue;
       if(scores[j] > scores[i] || (scores[j] == scores[i] && j < i)) is_max = false;
     }
     if(!is_max) continue;
@@ -286,7 +280,7 @@ OutputIterator best_viewpoints(const SymmetryRange& symmetries, OutputIterator o
   std::vector<Vec3> kept;
   for(const auto& m : maxima) {
     bool duplicate = false;
-    for(const Vec3& k : kept) duplicate = duplicate || std::abs(internal::dot(k, m.second)) > merge;
+    for(const Vec3& k : kept) duplicate = duplicate || std::abs(k.dot(m.second)) > merge;
     if(duplicate) continue;
     kept.push_back(m.second);
     *out++ = internal::make_viewpoint<GT>(m.second, m.first);
@@ -323,9 +317,9 @@ worst_viewpoint(const SymmetryRange& symmetries)
   Vec3 best = {0., 0., 1.};
   double best_score = planes.score(best);
   auto consider = [&](const Vec3& c) {
-    const double l = std::sqrt(internal::dot(c, c));
+    const double l = c.norm();
     if(!(l > 1e-9)) return;
-    const Vec3 v = {c[0] / l, c[1] / l, c[2] / l};
+    const Vec3 v = c / l;
     const double s = planes.score(v);
     if(s < best_score) { best = v; best_score = s; }
   };
@@ -333,11 +327,10 @@ worst_viewpoint(const SymmetryRange& symmetries)
   for(std::size_t i = 0; i < m; ++i) {
     const Vec3& u = planes.normals[i];
     // a direction in plane i: u crossed with the axis it is least aligned with
-    const double x = std::abs(u[0]), y = std::abs(u[1]), z = std::abs(u[2]);
-    Vec3 e = {0., 0., 0.};
-    e[x <= y && x <= z ? 0 : (y <= z ? 1 : 2)] = 1.;
-    consider(internal::cross(u, e));
-    for(std::size_t j = i + 1; j < m; ++j) consider(internal::cross(u, planes.normals[j]));
+    Eigen::Index least;
+    u.cwiseAbs().minCoeff(&least);
+    consider(u.cross(Vec3::Unit(least)));
+    for(std::size_t j = i + 1; j < m; ++j) consider(u.cross(planes.normals[j]));
   }
   return internal::make_viewpoint<GT>(best, best_score);
 }
