@@ -15,3 +15,12 @@ CGAL_add_named_parameter(st_number_of_refinement_samples_t, st_number_of_refinem
 CGAL_add_named_parameter(st_max_number_of_planes_t, st_max_number_of_planes, max_number_of_planes)
 CGAL_add_named_parameter(st_symmetry_threshold_t, st_symmetry_threshold, symmetry_threshold)
 CGAL_add_named_parameter(st_laplacian_threshold_t, st_laplacian_threshold, laplacian_threshold)
+
+// Symmetric remeshing (symmetric_remeshing.h)
+CGAL_add_named_parameter(st_symmetry_weight_t, st_symmetry_weight, symmetry_weight)
+// end of symmetric remeshing
+
+// Segmentation (symmetry_segmentation.h)
+CGAL_add_named_parameter(st_max_segmentation_depth_t, st_max_segmentation_depth, max_segmentation_depth)
+CGAL_add_named_parameter(st_max_number_of_segments_t, st_max_number_of_segments, max_number_of_segments)
+// end of segmentation
