@@ -17,10 +17,14 @@ CGAL_add_named_parameter(st_symmetry_threshold_t, st_symmetry_threshold, symmetr
 CGAL_add_named_parameter(st_laplacian_threshold_t, st_laplacian_threshold, laplacian_threshold)
 
 // Symmetric remeshing (symmetric_remeshing.h)
-CGAL_add_named_parameter(st_symmetry_weight_t, st_symmetry_weight, symmetry_weight)
+CGAL_add_named_parameter(st_position_weight_t, st_position_weight, position_weight)
+CGAL_add_named_parameter(st_strongest_plane_only_t, st_strongest_plane_only, strongest_plane_only)
+CGAL_add_named_parameter(st_output_mesh_t, st_output_mesh, output_mesh)
 // end of symmetric remeshing
 
 // Segmentation (symmetry_segmentation.h)
 CGAL_add_named_parameter(st_max_segmentation_depth_t, st_max_segmentation_depth, max_segmentation_depth)
 CGAL_add_named_parameter(st_max_number_of_segments_t, st_max_number_of_segments, max_number_of_segments)
+CGAL_add_named_parameter(st_smoothing_lambda_t, st_smoothing_lambda, smoothing_lambda)
+CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentation_tree)
 // end of segmentation
