@@ -7,12 +7,14 @@
 // For each mesh, with the default parameters except grid_resolution, each timed alone (wall
 // clock, median of --repeats runs, default number_of_threads = hardware_concurrency):
 //   - total: detect_principal_symmetries(mesh, np);
-//   - GEDT: gaussian_distance_transform(mesh, np);
+//   - GEDT: the Gaussian distance transform with the closest triangles of the voxels of its band
+//     (internal::gaussian_distance_transform_of_triangles, as detect computes it);
 //   - PRST: internal::detection_transform(gedt, np), i.e. the Monte Carlo PRST with detect's
 //     5e5 samples;
 //   - maxima: internal::symmetry_candidates(prst, 0.1, 0.1) (smoothing and candidate extraction);
-//   - tree: internal::triangles_of_mesh and the internal::Triangle_matcher (AABB tree);
-//   - ISP stage: internal::refine_candidates(gedt, prst, surface_samples, matcher, np), which
+//   - tree: internal::triangles_of_mesh, the internal::Triangle_matcher (AABB tree) and the
+//     internal::Closest_triangle_field (ISP walks with it);
+//   - ISP stage: internal::refine_candidates(gedt, prst, surface_samples, matcher, np, &field), which
 //     draws the 1e4 samples, extracts the candidates again and refines them, strongest first,
 //     until max_number_of_planes (10) are accepted or its cap on candidates is reached; with
 //     the number of candidates (all of them, before that cap) and of planes returned.
@@ -159,7 +161,11 @@ int main(int argc, char** argv)
 
     std::cerr << name << ": stages..." << std::endl;
     std::optional<ST::Voxel_grid<K>> gedt_holder; // no default constructors
-    const double gedt_time = median_time(repeats, [&] { gedt_holder.emplace(ST::gaussian_distance_transform(mesh, np)); });
+    std::vector<std::int32_t> closest_triangles;
+    const std::vector<STI::Dtriangle> mesh_triangles = STI::triangles_of_mesh(mesh, get(CGAL::vertex_point, mesh));
+    const double gedt_time = median_time(repeats, [&] {
+      gedt_holder.emplace(STI::gaussian_distance_transform_of_triangles<K>(mesh_triangles, np, &closest_triangles));
+    });
     const ST::Voxel_grid<K>& gedt = *gedt_holder;
     std::optional<ST::Reflective_symmetry_transform<K>> prst_holder;
     const double prst_time = median_time(repeats, [&] { prst_holder.emplace(STI::detection_transform(gedt, np)); });
@@ -168,15 +174,19 @@ int main(int argc, char** argv)
     const double maxima_time = median_time(repeats, [&] { candidates = STI::symmetry_candidates(prst, 0.1, 0.1).size(); });
     std::vector<STI::Dtriangle> triangles;
     std::optional<STI::Triangle_matcher> matcher_holder; // its tree points into `triangles`
+    std::optional<STI::Closest_triangle_field> field_holder; // and so does the field
     const double tree_time = median_time(repeats, [&] {
+      field_holder.reset();
       matcher_holder.reset();
       triangles = STI::triangles_of_mesh(mesh, get(CGAL::vertex_point, mesh));
       matcher_holder.emplace(triangles);
+      field_holder.emplace(STI::closest_triangle_field(triangles, *matcher_holder, closest_triangles, gedt));
     });
     const STI::Triangle_matcher& matcher = *matcher_holder;
+    const STI::Closest_triangle_field& field = *field_holder;
     std::vector<ST::Principal_symmetry<K>> planes;
     const double isp_time = median_time(repeats, [&] {
-      planes = STI::refine_candidates(gedt, prst, STI::surface_samples(triangles, np), matcher, np);
+      planes = STI::refine_candidates(gedt, prst, STI::surface_samples(triangles, np), matcher, np, &field);
     });
     std::cout << "| " << name << " | " << num_faces(mesh) << " | " << format("%.3f", total) << " | "
               << format("%.3f", gedt_time) << " | " << format("%.3f", prst_time) << " | " << format("%.3f", maxima_time)
@@ -208,7 +218,8 @@ int main(int argc, char** argv)
       STI::Dplane found = P;
       unsigned steps = 0;
       times.push_back(median_time(repeats, [&] {
-        const STI::Isp_result result = STI::iterative_symmetric_points(samples, STI::to_dplane(start), matcher, settings);
+        const STI::Isp_result result = STI::iterative_symmetric_points(samples, STI::to_dplane(start), matcher, settings,
+                                                                       STI::Isp_phase::BOTH, {}, &field);
         found = result.plane;
         steps = result.iterations;
       }));

@@ -90,12 +90,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
 
   const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
-  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
-  const internal::Shape_frame frame = internal::frame_of_triangles(triangles);
-  const internal::Grid_settings settings = internal::grid_settings(np, frame.radius);
-  Voxel_grid<GT> grid = internal::empty_grid<GT>(frame, settings);
-  internal::fill_gaussian_distance_transform_of_triangles(grid, triangles, settings);
-  return grid;
+  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, vpm), np);
 }
 
 /*!

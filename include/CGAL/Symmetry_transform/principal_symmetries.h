@@ -126,13 +126,23 @@ Reflective_symmetry_transform<GT> detection_transform(const Voxel_grid<GT>& gedt
     return reflective_symmetry_transform(gedt, np);
 }
 
-// Candidates of the PRST refined by ISP, kept if they stay near their bin, measured on the
-// GEDT, merged when equal, strongest first.
-template <typename GT, typename Matcher, typename NamedParameters>
+// The closest triangles of the voxels of a GEDT's band, as filled with it, for the walk of ISP.
+template <typename GT>
+Closest_triangle_field closest_triangle_field(const std::vector<Dtriangle>& triangles, const Triangle_matcher& exact,
+                                              std::vector<std::int32_t> closest_triangles, const Voxel_grid<GT>& gedt)
+{
+  return Closest_triangle_field(triangles, exact, std::move(closest_triangles), gedt.origin(), gedt.voxel_size(),
+                                gedt.resolution());
+}
+
+// Candidates of the PRST refined by ISP (walking with `walk_matcher` if given), kept if they
+// stay near their bin, measured on the GEDT, merged when equal, strongest first.
+template <typename GT, typename Matcher, typename NamedParameters, typename Walk_matcher = Matcher>
 std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt,
                                                       const Reflective_symmetry_transform<GT>& prst,
                                                       const std::vector<Eigen::Vector3d>& samples,
-                                                      const Matcher& matcher, const NamedParameters& np)
+                                                      const Matcher& matcher, const NamedParameters& np,
+                                                      const Walk_matcher* walk_matcher = nullptr)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -167,7 +177,7 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
       return near_accepted(plane, 2.) || !stays_near_bin(prst, plane, bin, unstable_reach);
     };
     const Isp_result coarse = iterative_symmetric_points(samples, to_dplane(prst.plane(bin)), matcher, settings,
-                                                         Isp_phase::COARSE, abandon);
+                                                         Isp_phase::COARSE, abandon, walk_matcher);
     // The coarse phase stops within about a bin of the optimum: closer than two bins to an
     // accepted plane, the fine phase would only find that plane again.
     // A start that the coarse phase cannot settle is on a slope or a ridge, not near a maximum;
@@ -175,7 +185,7 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
     const bool seen = near_accepted(coarse.plane, 2.), settled = coarse.converged || !Matcher::has_normals;
     Isp_result refined = coarse;
     if(!seen && settled)
-      refined = iterative_symmetric_points(samples, coarse.plane, matcher, settings, Isp_phase::FINE, abandon);
+      refined = iterative_symmetric_points(samples, coarse.plane, matcher, settings, Isp_phase::FINE, abandon, walk_matcher);
     const char* verdict = seen || near_accepted(refined.plane, 2.)              ? "same as an accepted plane"
                           : !stays_near_bin(prst, refined.plane, bin, unstable_reach) ? "left its bin"
                           : !settled || !(refined.support > 0.)                      ? "no convergence"
@@ -214,10 +224,13 @@ Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detect
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tm));
   const std::vector<Dtriangle> triangles = triangles_of_mesh(tm, vpm);
-  const Voxel_grid<GT> gedt = gaussian_distance_transform(tm, np);
+  std::vector<std::int32_t> closest_triangles;
+  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles);
   Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
   const Triangle_matcher matcher(triangles);
-  std::vector<Principal_symmetry<GT>> symmetries = refine_candidates(gedt, prst, surface_samples(triangles, np), matcher, np);
+  const Closest_triangle_field field = closest_triangle_field(triangles, matcher, std::move(closest_triangles), gedt);
+  std::vector<Principal_symmetry<GT>> symmetries =
+    refine_candidates(gedt, prst, surface_samples(triangles, np), matcher, np, &field);
   return {std::move(symmetries), std::move(prst)};
 }
 
@@ -244,9 +257,11 @@ Computes the principal symmetries of a triangle mesh from its reflective symmetr
 the local maxima of `prst` whose symmetry measure exceeds \f$ t\,(1 - |r|/R) \f$ and whose
 negative discrete Laplacian exceeds \f$ l \f$, with \f$ t \f$ and \f$ l \f$ fractions of those
 of the strongest maximum, each refined by Iterative Symmetric Points (ISP): surface samples
-are reflected through the plane and matched to their closest points on the mesh
-(`CGAL::AABB_tree`), and the plane re-fitted by least squares, with the Gaussian weights
-\f$ \exp(-d^2/2\sigma^2) \f$ of the match distances \f$ d \f$, until the weights stop growing.
+are reflected through the plane and matched to their closest points on the mesh, and the
+plane re-fitted by least squares, with the Gaussian weights \f$ \exp(-d^2/2\sigma^2) \f$ of
+the match distances \f$ d \f$, until the weights stop growing. The matches are first
+approximate (the closest triangles of the voxels around the point, recorded with the GEDT),
+then exact (`CGAL::AABB_tree`) for the last steps (\ref SymmetryTransformPrincipal).
 If the matches are then much closer than \f$ \sigma \f$ (an exact symmetry), the refinement goes
 on with weights of half and a quarter of that width, so that the parts of the shape the plane
 does not map lose their say: the local symmetries of a part of a composite shape come out
@@ -317,10 +332,14 @@ principal_symmetries(
 {
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tm));
+  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
+  std::vector<std::int32_t> closest_triangles;
+  const Voxel_grid<GT> gedt = internal::gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles);
   const internal::Triangle_matcher matcher(triangles);
-  return internal::refine_candidates(gaussian_distance_transform(tm, np), prst,
-                                     internal::surface_samples(triangles, np), matcher, np);
+  const internal::Closest_triangle_field field =
+    internal::closest_triangle_field(triangles, matcher, std::move(closest_triangles), gedt);
+  return internal::refine_candidates(gedt, prst, internal::surface_samples(triangles, np), matcher, np, &field);
 }
 
 /*!
@@ -387,12 +406,15 @@ refine_symmetry_plane(const TriangleMesh& tm,
                                                 get_const_property_map(CGAL::vertex_point, tm));
   const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
   const internal::Triangle_matcher matcher(triangles);
-  const Voxel_grid<GT> gedt = gaussian_distance_transform(tm, np);
+  std::vector<std::int32_t> closest_triangles;
+  const Voxel_grid<GT> gedt = internal::gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles);
+  const internal::Closest_triangle_field field =
+    internal::closest_triangle_field(triangles, matcher, std::move(closest_triangles), gedt);
   const internal::Isp_settings settings = internal::isp_settings(np, gedt);
-  return internal::to_plane<GT>(
-    internal::iterative_symmetric_points(internal::surface_samples(triangles, np), internal::to_dplane(plane), matcher,
-                                         settings)
-      .plane);
+  return internal::to_plane<GT>(internal::iterative_symmetric_points(internal::surface_samples(triangles, np),
+                                                                     internal::to_dplane(plane), matcher, settings,
+                                                                     internal::Isp_phase::BOTH, {}, &field)
+                                  .plane);
 }
 
 /*!

@@ -9,15 +9,14 @@
 #include <CGAL/Symmetry_transform/internal/grid_settings.h>
 #include <CGAL/Symmetry_transform/internal/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/triangle_tree.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -84,7 +83,7 @@ void mark_band_of_point(const Voxel_grid<GT>& grid, const Dpoint& p, double cuto
       }
 }
 
-// Sets each voxel of the band to exp(-d^2 / 2 sigma^2), d = squared_distance(thread, point)
+// Sets each voxel v of the band to exp(-d^2 / 2 sigma^2), d^2 = squared_distance(point, v)
 // computed in parallel, then normalises the grid to unit sum of squares.
 template <typename GT, typename SquaredDistance>
 void fill_gaussian_of_band(Voxel_grid<GT>& grid, const std::vector<char>& in_band,
@@ -102,7 +101,7 @@ void fill_gaussian_of_band(Voxel_grid<GT>& grid, const std::vector<char>& in_ban
       const std::size_t v = band[b];
       const Dpoint p(o[0] + (double(v % n) + 0.5) * h, o[1] + (double(v / n % n) + 0.5) * h,
                      o[2] + (double(v / (n * n)) + 0.5) * h);
-      const double d2 = squared_distance(p);
+      const double d2 = squared_distance(p, v);
       f[v] = d2 <= cutoff2 ? std::exp(-d2 / (2. * sigma * sigma)) : 0.;
     }
   });
@@ -112,21 +111,38 @@ void fill_gaussian_of_band(Voxel_grid<GT>& grid, const std::vector<char>& in_ban
   for(double& x : f) x *= scale;
 }
 
+// If `closest_triangles` is given, it receives the index of the triangle closest to the centre
+// of each voxel of the band (-1 elsewhere): a Closest_triangle_field for ISP, at no extra cost.
 template <typename GT>
 void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid,
                                                    const std::vector<Dtriangle>& triangles,
-                                                   const Grid_settings& settings)
+                                                   const Grid_settings& settings,
+                                                   std::vector<std::int32_t>* closest_triangles = nullptr)
 {
-  typedef CGAL::AABB_triangle_primitive<Dkernel, std::vector<Dtriangle>::const_iterator> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Dkernel, Primitive>> Tree;
-
   std::vector<char> in_band(grid.values().size(), 0);
   for(const Dtriangle& t : triangles) mark_band_of_triangle(grid, t, settings.cutoff(), in_band);
-  Tree tree(triangles.begin(), triangles.end());
+  Triangle_tree tree(triangles.begin(), triangles.end());
   tree.build();
   tree.accelerate_distance_queries();
   tree.squared_distance(CGAL::ORIGIN); // builds the search structure before threads share the tree
-  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p) { return tree.squared_distance(p); });
+  if(closest_triangles != nullptr) closest_triangles->assign(grid.values().size(), -1);
+  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t v) {
+    const auto closest = tree.closest_point_and_primitive(p);
+    if(closest_triangles != nullptr) (*closest_triangles)[v] = std::int32_t(closest.second - triangles.begin());
+    return CGAL::squared_distance(p, closest.first);
+  });
+}
+
+// The GEDT of a triangle soup, on the grid the named parameters describe.
+template <typename GT, typename NamedParameters>
+Voxel_grid<GT> gaussian_distance_transform_of_triangles(const std::vector<Dtriangle>& triangles, const NamedParameters& np,
+                                                       std::vector<std::int32_t>* closest_triangles = nullptr)
+{
+  const Shape_frame frame = frame_of_triangles(triangles);
+  const Grid_settings settings = grid_settings(np, frame.radius);
+  Voxel_grid<GT> grid = empty_grid<GT>(frame, settings);
+  fill_gaussian_distance_transform_of_triangles(grid, triangles, settings, closest_triangles);
+  return grid;
 }
 
 template <typename GT>
@@ -140,7 +156,7 @@ void fill_gaussian_distance_transform_of_points(Voxel_grid<GT>& grid, const std:
   for(const Dpoint& p : points) mark_band_of_point(grid, p, settings.cutoff(), in_band);
   typename Search::Tree tree(points.begin(), points.end());
   tree.build();
-  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p) {
+  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t) {
     Search search(tree, p, 1);
     return search.begin()->second;
   });

@@ -11,21 +11,23 @@
 // match distances d being those of the Gaussian distance transform. On a mesh the fit
 // minimises the distance of each reflected sample to the tangent plane at its match
 // (Gauss-Newton: few iterations on symmetric shapes); on a point set, with no normals, it
-// minimises the distance to the match itself (closed form).
+// minimises the distance to the match itself (closed form). On a mesh, ISP walks with the
+// approximate matches of a Closest_triangle_field and ends with exact searches in the AABB tree.
 
 #include <CGAL/Symmetry_transform/internal/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/triangle_tree.h>
 
-#include <CGAL/AABB_traits.h>
 #include <CGAL/hilbert_sort.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <functional>
 #include <stdexcept>
 #include <cmath>
@@ -43,8 +45,6 @@ struct Dplane
 
   Eigen::Vector3d reflect(const Eigen::Vector3d& p) const { return p - 2. * (normal.dot(p) - offset) * normal; }
 };
-
-inline Eigen::Vector3d to_eigen(const Dpoint& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
 
 // Samples in the order ISP visits them: every eighth first (those of the coarse phase, spread
 // over the shape), then the others, each part along a Hilbert curve, so that consecutive
@@ -74,8 +74,7 @@ Dplane to_dplane(const Plane& plane)
 // Closest points on a triangle soup, with the normal of the triangle they lie on.
 class Triangle_matcher
 {
-  typedef CGAL::AABB_triangle_primitive<Dkernel, std::vector<Dtriangle>::const_iterator> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Dkernel, Primitive>> Tree;
+  typedef Triangle_tree Tree;
 
 public:
   static constexpr bool has_normals = true;
@@ -106,6 +105,72 @@ public:
 private:
   const std::vector<Dtriangle>& triangles_;
   Tree tree_;
+};
+
+// Approximate closest points on a triangle soup, about ten times cheaper than the exact search:
+// the nearest of the triangles closest to the eight voxel centres around the query, read from
+// a grid filled with the Gaussian distance transform. Within the band of the transform the
+// distance is close to the true one (on a smooth surface the true closest triangle is a
+// neighbour of these) and the normal that of the surface there; outside, the exact matcher
+// answers. ISP walks with it and ends with exact searches.
+class Closest_triangle_field
+{
+public:
+  static constexpr bool has_normals = true;
+  struct Hint {};
+
+  // `closest_triangles`: per voxel (index (k n + j) n + i) the triangle closest to its centre,
+  // or -1; `origin`: the corner of the grid, `voxel_size` and `resolution` its geometry.
+  Closest_triangle_field(const std::vector<Dtriangle>& triangles, const Triangle_matcher& exact,
+                         std::vector<std::int32_t> closest_triangles, const std::array<double, 3>& origin,
+                         double voxel_size, std::size_t resolution)
+    : exact_(exact), closest_triangles_(std::move(closest_triangles)), origin_(origin),
+      voxel_size_(voxel_size), resolution_(long(resolution))
+  {
+    corners_.reserve(triangles.size());
+    normals_.reserve(triangles.size());
+    for(const Dtriangle& t : triangles) {
+      corners_.push_back({to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2])});
+      normals_.push_back(to_eigen(CGAL::ORIGIN + CGAL::cross_product(t[1] - t[0], t[2] - t[0])).normalized());
+    }
+  }
+
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint&, bool) const
+  {
+    // The cell of voxel centres around p.
+    std::array<long, 3> corner;
+    for(int a = 0; a < 3; ++a)
+      corner[a] = (std::min)((std::max)(long(std::floor((p[a] - origin_[a]) / voxel_size_ - 0.5)), 0L), resolution_ - 2);
+    std::array<std::int32_t, 8> seen;
+    std::size_t count = 0;
+    double best = std::numeric_limits<double>::infinity();
+    std::pair<Eigen::Vector3d, Eigen::Vector3d> match;
+    for(long c = 0; c < 8; ++c) {
+      const std::int32_t t = closest_triangles_[std::size_t(((corner[2] + (c >> 2)) * resolution_ + corner[1] + ((c >> 1) & 1)) * resolution_ +
+                                                            corner[0] + (c & 1))];
+      if(t < 0 || std::find(seen.begin(), seen.begin() + count, t) != seen.begin() + count) continue;
+      seen[count++] = t;
+      const std::array<Eigen::Vector3d, 3>& v = corners_[std::size_t(t)];
+      const Eigen::Vector3d on_triangle = closest_point_on_triangle(p, v[0], v[1], v[2]);
+      const double d2 = (p - on_triangle).squaredNorm();
+      if(d2 < best) {
+        best = d2;
+        match = {on_triangle, normals_[std::size_t(t)]};
+      }
+    }
+    if(count > 0) return match;
+    Triangle_matcher::Hint hint;
+    return exact_.closest(p, hint, false);
+  }
+
+private:
+  const Triangle_matcher& exact_;
+  std::vector<std::array<Eigen::Vector3d, 3>> corners_;
+  std::vector<Eigen::Vector3d> normals_;
+  std::vector<std::int32_t> closest_triangles_;
+  std::array<double, 3> origin_;
+  double voxel_size_;
+  long resolution_;
 };
 
 // Closest points of a point set (no normals).
@@ -355,21 +420,52 @@ Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Match
   return best;
 }
 
+// Plain ISP steps from result.plane, whose sums are `start`, while they raise the mean weight:
+// at most `max_steps`, and none after a step below 1e-7 (a converged exact symmetry). It ends a
+// walk made with approximate matches: from its top, the exact optimum is a step or two away.
+template <typename Matcher>
+Isp_sums polish(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher, const Isp_settings& settings,
+                double width, const Isp_sums& start, Match_hints<Matcher>& hints, unsigned max_steps, Isp_result& result)
+{
+  Isp_sums best = start;
+  result.support = best.support / double(samples.size());
+  for(unsigned step = 0; step < max_steps; ++step) {
+    Dplane trial = result.plane;
+    if(!refit<Matcher>(best, trial)) break;
+    const Isp_sums s = isp_sums(samples, trial, matcher, settings, width, hints);
+    ++result.iterations;
+    if(!(s.weight > best.weight)) break;
+    const double moved = (trial.normal - result.plane.normal).norm() + std::abs(trial.offset - result.plane.offset) / settings.radius;
+    result.plane = trial;
+    result.support = s.support / double(samples.size());
+    best = s;
+    if(moved < 1e-7) break;
+  }
+  return best;
+}
+
 } // namespace isp
 
-template <typename Matcher>
+// ISP from `plane`: the coarse phase, then the fine phase (see above). With a `walk_matcher`
+// (approximate and cheaper matches), both phases walk with it, and a few plain steps with the
+// exact `matcher` end the fine phase (`Isp_phase::COARSE` then uses only the walk matcher).
+template <typename Matcher, typename Walk_matcher = Matcher>
 Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane,
                                       const Matcher& matcher, const Isp_settings& settings,
                                       Isp_phase phases = Isp_phase::BOTH,
-                                      const std::function<bool(const Dplane&)>& abandon = {})
+                                      const std::function<bool(const Dplane&)>& abandon = {},
+                                      const Walk_matcher* walk_matcher = nullptr)
 {
   Match_hints<Matcher> hints(samples.size());
+  Match_hints<Walk_matcher> walk_hints(walk_matcher != nullptr ? samples.size() : 0);
+  const bool walks = walk_matcher != nullptr;
   std::vector<Eigen::Vector3d> coarse_samples(samples.begin(), samples.begin() + std::ptrdiff_t(samples.size() / 8));
   if(coarse_samples.size() < 100) coarse_samples.clear(); // too few to locate anything
   Dplane start = plane;
   unsigned coarse_iterations = 0;
   if(phases != Isp_phase::FINE && !coarse_samples.empty()) {
-    const Isp_result coarse = isp::coarse_phase(coarse_samples, plane, matcher, settings, hints, abandon);
+    const Isp_result coarse = walks ? isp::coarse_phase(coarse_samples, plane, *walk_matcher, settings, walk_hints, abandon)
+                                    : isp::coarse_phase(coarse_samples, plane, matcher, settings, hints, abandon);
     if(phases == Isp_phase::COARSE) return coarse;
     // Not settled: the fine phase goes on from there all the same (a user's rough plane).
     start = coarse.plane;
@@ -379,17 +475,33 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   // plane within a few hundredths of a degree after the quadratic convergence of Gauss-Newton.
   constexpr double min_gain = 1e-3;
   Isp_result fine{start, 0., false, coarse_iterations};
-  Isp_sums last = isp::relaxed_ascent(samples, matcher, settings, 1., isp_sums(samples, start, matcher, settings, 1., hints),
-                                      hints, abandon, min_gain, fine);
-  // Narrower weights then sharpen an exact symmetry, whose matches are much closer than sigma:
-  // parts of the shape that it does not map, matched a fraction of sigma away, lose their say
-  // (a local symmetry beside another part). On an approximate symmetry, whose mean weight would
-  // drop, they would fit the plane to the few samples that match best: the plane stays.
-  for(const double width : {0.5, 0.25}) {
-    if(last.narrower_weight < 0.85 * last.weight || (abandon && abandon(fine.plane))) break;
-    last = isp::relaxed_ascent(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints),
-                               hints, abandon, min_gain, fine);
+  // The fine phase with matcher m; returns the width of its last weights. Narrower weights
+  // sharpen an exact symmetry, whose matches are much closer than sigma: parts of the shape that
+  // it does not map, matched a fraction of sigma away, lose their say (a local symmetry beside
+  // another part). On an approximate symmetry, whose mean weight would drop, they would fit the
+  // plane to the few samples that match best: the plane stays.
+  auto climb = [&](const auto& m, auto& m_hints) {
+    Isp_sums last = isp::relaxed_ascent(samples, m, settings, 1., isp_sums(samples, start, m, settings, 1., m_hints), m_hints,
+                                        abandon, min_gain, fine);
+    double width = 1.;
+    for(const double narrower : {0.5, 0.25}) {
+      if(last.narrower_weight < 0.85 * last.weight || (abandon && abandon(fine.plane))) break;
+      width = narrower;
+      last = isp::relaxed_ascent(samples, m, settings, width, isp_sums(samples, fine.plane, m, settings, width, m_hints),
+                                 m_hints, abandon, min_gain, fine);
+    }
+    return width;
+  };
+  if(!walks) {
+    climb(matcher, hints);
+    return fine;
   }
+  const double width = climb(*walk_matcher, walk_hints);
+  if(abandon && abandon(fine.plane)) return fine;
+  // From the top of the walk, the exact optimum is a step away on an approximate symmetry (whose
+  // ridge is flat: more steps would creep), and a few Gauss-Newton steps on an exact one.
+  isp::polish(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints), hints,
+              width < 1. ? 4 : 1, fine);
   return fine;
 }
 

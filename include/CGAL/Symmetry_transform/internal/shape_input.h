@@ -14,6 +14,8 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
 
+#include <Eigen/Core>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -28,6 +30,8 @@ typedef CGAL::Simple_cartesian<double> Dkernel;
 typedef Dkernel::Point_3 Dpoint;
 typedef Dkernel::Vector_3 Dvector;
 typedef Dkernel::Triangle_3 Dtriangle;
+
+inline Eigen::Vector3d to_eigen(const Dpoint& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
 
 // Centre of mass and radius: the frame every grid and every plane offset is expressed in.
 struct Shape_frame
