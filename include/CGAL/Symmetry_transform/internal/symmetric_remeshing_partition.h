@@ -36,6 +36,7 @@
 #include <cstdint>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <queue>
 #include <vector>
 
@@ -120,6 +121,18 @@ public:
     wn_ = 1. - s_.position_weight;
     wp_ = average_area > 0. ? s_.position_weight / average_area : 0.;
     label_.assign(m_.number_of_faces(), none);
+    // The data the flooding reads, packed per face (one cache line) for speed.
+    face_.resize(m_.number_of_faces());
+    neighbor_.resize(3 * m_.number_of_faces());
+    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
+      Face_data& d = face_[f];
+      for(int i = 0; i < 3; ++i) {
+        d.n[i] = m_.normal[f][i];
+        d.c[i] = m_.centroid[f][i];
+        neighbor_[3 * f + i] = m_.neighbor(3 * f + i);
+      }
+      d.a = m_.area[f];
+    }
   }
 
   std::size_t transforms() const { return t_; }
@@ -191,7 +204,14 @@ private:
 
   double error(std::size_t f, std::size_t label) const
   {
-    return m_.area[f] * (wn_ * (m_.normal[f] - tn_[label]).squaredNorm() + wp_ * (m_.centroid[f] - tc_[label]).squaredNorm());
+    const Face_data& d = face_[f];
+    const Target& t = target_[label];
+    double n2 = 0., c2 = 0.;
+    for(int i = 0; i < 3; ++i) {
+      n2 += (d.n[i] - t.n[i]) * (d.n[i] - t.n[i]);
+      c2 += (d.c[i] - t.c[i]) * (d.c[i] - t.c[i]);
+    }
+    return d.a * (wn_ * n2 + wp_ * c2);
   }
 
   void update_targets(std::size_t p)
@@ -200,6 +220,10 @@ private:
       const std::size_t l = p * t_ + i;
       tn_[l] = i == 0 ? proxies_[p].normal : reflect_vector(s_.planes[i - 1], proxies_[p].normal);
       tc_[l] = i == 0 ? proxies_[p].center : s_.planes[i - 1].reflect(proxies_[p].center);
+      for(int c = 0; c < 3; ++c) {
+        target_[l].n[c] = tn_[l][c];
+        target_[l].c[c] = tc_[l][c];
+      }
     }
   }
 
@@ -207,6 +231,7 @@ private:
   {
     tn_.resize(proxies_.size() * t_);
     tc_.resize(proxies_.size() * t_);
+    target_.resize(proxies_.size() * t_);
     patch_area_.resize(proxies_.size() * t_, 0.);
     disabled_.resize(proxies_.size() * t_, 0);
     for(std::size_t p = 0; p < proxies_.size(); ++p) update_targets(p);
@@ -229,7 +254,7 @@ private:
     if(disabled_[label]) return false;
     if(patch_faces_[label] == 0) return true;
     for(int i = 0; i < 3; ++i) {
-      const std::size_t g = m_.neighbor(3 * f + i);
+      const std::size_t g = neighbor_[3 * f + i];
       if(g != none && label_[g] == label) return true;
     }
     return false;
@@ -253,25 +278,36 @@ private:
       label_[g] = l;
       ++patch_faces_[l];
       const std::size_t p = l / t_, i = l % t_;
-      const double e = error(g, l);
+      double e = -1.;
       for(int h = 0; h < 3; ++h) {
-        const std::size_t n = m_.neighbor(3 * g + h);
+        const std::size_t n = neighbor_[3 * g + h];
         if(n == none || label_[n] != none) continue;
         bool blocked = false; // a patch of the identity or of plane j does not cross plane j where the face has a mirror
         for(std::size_t j = 0; j < k_ && !blocked; ++j)
           blocked = (i == 0 || i == j + 1) && mirror_[g * k_ + j] != none && on_plane(3 * g + h, j);
-        if(!blocked) heap_.push({error(n, l), std::uint32_t(n), std::uint32_t(l)});
+        if(blocked) continue;
+        // An entry that cannot beat one already queued for the face is left out (every queued
+        // entry succeeds if its face is still free when popped: patches only grow).
+        const double en = error(n, l);
+        if(en > best_[n]) continue;
+        best_[n] = en;
+        heap_.push({en, std::uint32_t(n), std::uint32_t(l)});
       }
       for(std::size_t j = 0; j < k_; ++j) {
         if(i != 0 && i != j + 1) continue; // reflections of the identity patch, and back to it
         const std::size_t mf = mirror_[g * k_ + j];
         if(mf == none || label_[mf] != none) continue;
         const std::size_t ml = p * t_ + (i == 0 ? j + 1 : 0);
+        // Not next to its patch yet: it will be offered again when a face next to it is mirrored there.
+        if(!can_join(mf, ml)) continue;
         const double me = error(mf, ml);
-        if(can_join(mf, ml) && me <= 2. * e + 0.01 * m_.area[mf])
+        if(e < 0.) e = error(g, l);
+        if(me <= 2. * e + 0.01 * face_[mf].a)
           stack_.push_back({me, std::uint32_t(mf), std::uint32_t(ml)});
-        else
+        else if(me <= best_[mf]) {
+          best_[mf] = me;
           heap_.push({me, std::uint32_t(mf), std::uint32_t(ml)});
+        }
       }
     }
   }
@@ -280,6 +316,7 @@ private:
   {
     const std::size_t nf = m_.number_of_faces();
     label_.assign(nf, none);
+    best_.assign(nf, std::numeric_limits<double>::infinity());
     patch_faces_.assign(proxies_.size() * t_, 0);
     for(const Proxy& p : proxies_)
       if(p.seed != none && label_[p.seed] == none) assign(p.seed, p.seed_label);
@@ -584,7 +621,18 @@ private:
   std::vector<Proxy> proxies_;
   std::vector<std::size_t> label_, patch_faces_;
   std::vector<Eigen::Vector3d> tn_, tc_;
-  std::vector<double> patch_area_;
+  struct Face_data
+  {
+    double n[3], c[3], a, unused;
+  };
+  struct Target
+  {
+    double n[3], c[3];
+  };
+  std::vector<Face_data> face_;
+  std::vector<Target> target_;
+  std::vector<std::size_t> neighbor_;
+  std::vector<double> patch_area_, best_;
   std::vector<char> disabled_;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
   std::vector<Candidate> stack_;
