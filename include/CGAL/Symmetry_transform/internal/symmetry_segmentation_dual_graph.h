@@ -1,0 +1,198 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_DUAL_GRAPH_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_DUAL_GRAPH_H
+
+// The faces of a mesh as indices 0..n-1 (in the order of faces(tm)), their geometry in double
+// precision, and the dual graph of the segmentation: one edge per pair of faces sharing a mesh
+// edge, with its length and the Katz-Tal angular distance of the two faces. Connected parts of
+// sets of faces, and a set of faces copied into a mesh of its own (a segment's sub-mesh).
+
+#include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/shape_input.h>
+
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <map>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+// Katz and Tal weigh convex creases less than concave ones: a part boundary tends to run along
+// a concave crease.
+constexpr double convex_crease_factor = 0.1;
+
+struct Dual_edge
+{
+  std::size_t first, second; // the two faces
+  double length;             // of the mesh edge they share
+  double angular_distance;   // eta (1 - cos alpha), alpha the angle of the normals, eta 1 if concave
+};
+
+struct Segmentation_mesh
+{
+  std::vector<std::array<Eigen::Vector3d, 3>> triangles; // every face, degenerate ones included
+  std::vector<double> areas;
+  std::vector<Dual_edge> edges;
+  std::vector<std::vector<std::size_t>> face_edges; // the dual edges of each face
+
+  std::size_t number_of_faces() const { return triangles.size(); }
+};
+
+inline Eigen::Vector3d unit_normal_of(const std::array<Eigen::Vector3d, 3>& t)
+{
+  const Eigen::Vector3d n = (t[1] - t[0]).cross(t[2] - t[0]);
+  const double l = n.norm();
+  return l > 0. ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
+}
+
+// Reads the mesh (the checks of triangles_of_mesh() having been done by the caller).
+template <typename TriangleMesh, typename VertexPointMap>
+Segmentation_mesh segmentation_mesh(const TriangleMesh& tm, const VertexPointMap& vpm)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  Segmentation_mesh mesh;
+  std::map<face_descriptor, std::size_t> index;
+  for(face_descriptor f : faces(tm)) {
+    index.emplace(f, mesh.triangles.size());
+    const auto h = halfedge(f, tm);
+    mesh.triangles.push_back({to_eigen(to_dpoint(get(vpm, source(h, tm)))), to_eigen(to_dpoint(get(vpm, target(h, tm)))),
+                              to_eigen(to_dpoint(get(vpm, target(next(h, tm), tm))))});
+    const auto& t = mesh.triangles.back();
+    mesh.areas.push_back(0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm());
+  }
+  mesh.face_edges.resize(mesh.triangles.size());
+  for(face_descriptor f : faces(tm)) {
+    const std::size_t i = index[f];
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      const auto g = face(opposite(h, tm), tm);
+      if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
+      const std::size_t j = index[g];
+      if(j <= i) continue; // each pair once (j == i cannot happen in a valid halfedge graph)
+      const Eigen::Vector3d a = to_eigen(to_dpoint(get(vpm, source(h, tm)))), b = to_eigen(to_dpoint(get(vpm, target(h, tm))));
+      const Eigen::Vector3d d = to_eigen(to_dpoint(get(vpm, target(next(opposite(h, tm), tm), tm))));
+      const Eigen::Vector3d n1 = unit_normal_of(mesh.triangles[i]), n2 = unit_normal_of(mesh.triangles[j]);
+      // Concave when the far vertex of the second face lies above the first face's plane.
+      const bool concave = n1.dot(d - a) > 0.;
+      const double distance = (concave ? 1. : convex_crease_factor) * (std::max)(0., 1. - n1.dot(n2));
+      mesh.face_edges[i].push_back(mesh.edges.size());
+      mesh.face_edges[j].push_back(mesh.edges.size());
+      mesh.edges.push_back({i, j, (b - a).norm(), distance});
+    }
+  }
+  return mesh;
+}
+
+inline std::size_t other_face(const Dual_edge& e, std::size_t f) { return e.first == f ? e.second : e.first; }
+
+// The connected parts of the faces whose `region` value is the same (regions given for the faces
+// of `faces` only, through `local`, the position of a face in `faces` or -1): each part as a list
+// of faces, in increasing order of their first face in `faces`.
+inline std::vector<std::vector<std::size_t>> connected_parts(const Segmentation_mesh& mesh,
+                                                             const std::vector<std::size_t>& faces,
+                                                             const std::vector<std::size_t>& local,
+                                                             const std::vector<std::size_t>& region)
+{
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> part(faces.size(), none);
+  std::vector<std::vector<std::size_t>> parts;
+  std::vector<std::size_t> stack;
+  for(std::size_t start = 0; start < faces.size(); ++start) {
+    if(part[start] != none) continue;
+    parts.emplace_back();
+    part[start] = parts.size() - 1;
+    stack.push_back(start);
+    while(!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      parts.back().push_back(faces[i]);
+      for(std::size_t e : mesh.face_edges[faces[i]]) {
+        const std::size_t j = local[other_face(mesh.edges[e], faces[i])];
+        if(j == none || part[j] != none || region[j] != region[i]) continue;
+        part[j] = parts.size() - 1;
+        stack.push_back(j);
+      }
+    }
+  }
+  for(auto& p : parts) std::sort(p.begin(), p.end());
+  return parts;
+}
+
+// Merges each part smaller than `min_area`, smallest first, into the neighbouring part with which
+// it shares the longest boundary; a part with no neighbour (a component of the mesh of its own)
+// stays. The result is in the order of the parts' first faces.
+inline std::vector<std::vector<std::size_t>> merge_small_parts(const Segmentation_mesh& mesh,
+                                                               std::vector<std::vector<std::size_t>> parts,
+                                                               double min_area)
+{
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> part_of(mesh.number_of_faces(), none);
+  std::vector<double> area(parts.size(), 0.);
+  for(std::size_t p = 0; p < parts.size(); ++p)
+    for(std::size_t f : parts[p]) {
+      part_of[f] = p;
+      area[p] += mesh.areas[f];
+    }
+  std::vector<std::size_t> order(parts.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return area[a] < area[b]; });
+  for(std::size_t p : order) {
+    if(!(area[p] < min_area)) continue;
+    std::map<std::size_t, double> shared; // neighbouring part -> length of the common boundary
+    for(std::size_t f : parts[p])
+      for(std::size_t e : mesh.face_edges[f]) {
+        const std::size_t q = part_of[other_face(mesh.edges[e], f)];
+        if(q != none && q != p) shared[q] += mesh.edges[e].length;
+      }
+    if(shared.empty()) continue;
+    const std::size_t target =
+      std::max_element(shared.begin(), shared.end(), [](const auto& x, const auto& y) { return x.second < y.second; })->first;
+    for(std::size_t f : parts[p]) part_of[f] = target;
+    parts[target].insert(parts[target].end(), parts[p].begin(), parts[p].end());
+    area[target] += area[p];
+    parts[p].clear();
+  }
+  parts.erase(std::remove_if(parts.begin(), parts.end(), [](const auto& x) { return x.empty(); }), parts.end());
+  for(auto& x : parts) std::sort(x.begin(), x.end());
+  std::sort(parts.begin(), parts.end(), [](const auto& x, const auto& y) { return x.front() < y.front(); });
+  return parts;
+}
+
+typedef CGAL::Surface_mesh<Dpoint> Soup_mesh;
+
+// The faces as a mesh of their own, each face with its own three vertices (a triangle soup: a
+// subset of a mesh's faces can meet at a vertex in ways a halfedge mesh rejects, and the detection
+// only reads triangles), degenerate faces left out.
+inline Soup_mesh soup_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
+{
+  Soup_mesh soup;
+  soup.reserve(Soup_mesh::size_type(3 * faces.size()), Soup_mesh::size_type(3 * faces.size()),
+               Soup_mesh::size_type(faces.size()));
+  for(std::size_t f : faces) {
+    if(!(mesh.areas[f] > 0.)) continue;
+    std::array<Soup_mesh::Vertex_index, 3> v;
+    for(int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& p = mesh.triangles[f][k];
+      v[k] = soup.add_vertex(Dpoint(p.x(), p.y(), p.z()));
+    }
+    soup.add_face(v[0], v[1], v[2]);
+  }
+  return soup;
+}
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_DUAL_GRAPH_H

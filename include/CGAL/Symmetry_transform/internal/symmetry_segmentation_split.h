@@ -1,0 +1,194 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_SPLIT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_SPLIT_H
+
+// The split of one segment of segment_by_symmetry(): its principal symmetries detected on the
+// segment alone, the faces' supports of each plane as feature vectors, the stopping rule, the
+// fuzzy clustering and graph cut, and the connected parts of the labels. Segments of one level
+// are split in parallel.
+
+#include <CGAL/Symmetry_transform/internal/symmetry_segmentation_clustering.h>
+#include <CGAL/Symmetry_transform/internal/symmetry_segmentation_dual_graph.h>
+#include <CGAL/Symmetry_transform/principal_symmetries.h>
+#include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
+
+#include <boost/property_map/function_property_map.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+// A segment reflected by none of its planes over more than this fraction of its area, or by all
+// of them over more than its complement, is not split (thesis, section 5.2.2).
+constexpr double least_partial_fraction = 0.1;
+// The supports of the feature vectors are measured with a Gaussian of half the detection's width:
+// closer to 0 or 1 (a face is mirrored or it is not), they cluster more cleanly.
+constexpr double feature_width_factor = 0.5;
+// Parts of a split smaller than this fraction of the segment are merged into a neighbour.
+constexpr double least_part_fraction = 0.03;
+
+// The detection settings of segment_by_symmetry(): those of detect_principal_symmetries() with
+// defaults fitted to segmentation.
+struct Segmentation_settings
+{
+  long grid_resolution;
+  double gaussian_width;
+  std::size_t number_of_samples;
+  std::size_t number_of_refinement_samples;
+  unsigned number_of_iterations;
+  std::size_t max_number_of_planes;
+  double symmetry_threshold;
+  double laplacian_threshold;
+  Reflective_symmetry_method method;
+  Monte_carlo_estimator estimator;
+  unsigned seed;
+  unsigned threads;
+};
+
+template <typename NamedParameters>
+Segmentation_settings segmentation_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Segmentation_settings s;
+  s.grid_resolution = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), 32));
+  s.gaussian_width = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), 1.5));
+  s.number_of_samples = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), 100000));
+  s.number_of_refinement_samples =
+    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), 2000));
+  s.number_of_iterations = unsigned(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20));
+  s.max_number_of_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), 6));
+  s.symmetry_threshold = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), 0.1));
+  s.laplacian_threshold = double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), 0.1));
+  s.method = choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
+  s.estimator =
+    choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
+  s.seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), 0u));
+  s.threads = (std::max)(1u, unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
+                                                      default_number_of_threads())));
+  if(s.max_number_of_planes == 0)
+    throw std::invalid_argument("segment_by_symmetry: max_number_of_planes must be positive");
+  return s;
+}
+
+// The named parameters of the detection on a segment's sub-mesh.
+inline auto detection_parameters(const Segmentation_settings& s, unsigned threads)
+{
+  return CGAL::parameters::grid_resolution(s.grid_resolution)
+    .gaussian_width(s.gaussian_width)
+    .number_of_samples(s.number_of_samples)
+    .number_of_refinement_samples(s.number_of_refinement_samples)
+    .number_of_iterations(s.number_of_iterations)
+    .max_number_of_planes(s.max_number_of_planes)
+    .symmetry_threshold(s.symmetry_threshold)
+    .laplacian_threshold(s.laplacian_threshold)
+    .prst_method(s.method)
+    .monte_carlo_estimator(s.estimator)
+    .random_seed(s.seed)
+    .number_of_threads(threads);
+}
+
+struct Split
+{
+  std::vector<Principal_symmetry<Dkernel>> planes; // of the segment, strongest first
+  std::vector<double> reflected_fractions;         // of each plane
+  bool partial_symmetry = false;                   // some plane reflects 10 % to 90 % of the segment
+  std::vector<std::vector<std::size_t>> parts;     // the children (faces of the mesh), if split
+  double seconds = 0.;
+};
+
+// The split of the segment made of `faces` (connected, sorted).
+inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
+                           const Segmentation_settings& settings, double lambda, unsigned threads)
+{
+  const auto start = std::chrono::steady_clock::now();
+  Split split;
+  const Soup_mesh soup = soup_of(mesh, faces);
+  const auto np = detection_parameters(settings, threads);
+  split.planes = detect_principal_symmetries(soup, np);
+
+  // Features: the support of each plane on each face (the soup's faces are the segment's faces
+  // of non-zero area, in the same order; degenerate faces keep zero features and zero weight).
+  std::vector<std::size_t> soup_to_segment;
+  std::vector<double> weights(faces.size());
+  for(std::size_t i = 0; i < faces.size(); ++i) {
+    weights[i] = mesh.areas[faces[i]];
+    if(weights[i] > 0.) soup_to_segment.push_back(i);
+  }
+  Eigen::MatrixXd features = Eigen::MatrixXd::Zero(Eigen::Index(faces.size()), Eigen::Index(split.planes.size()));
+  for(std::size_t j = 0; j < split.planes.size(); ++j) {
+    auto support = boost::make_function_property_map<Soup_mesh::Face_index, double&>(
+      [&](Soup_mesh::Face_index f) -> double& { return features(Eigen::Index(soup_to_segment[f]), Eigen::Index(j)); });
+    const double fraction =
+      symmetry_support(soup, split.planes[j].plane, support, np.gaussian_width(feature_width_factor * settings.gaussian_width));
+    split.reflected_fractions.push_back(fraction);
+    if(fraction >= least_partial_fraction && fraction <= 1. - least_partial_fraction) split.partial_symmetry = true;
+  }
+  if(split.partial_symmetry) {
+    const Fuzzy_two_clusters clusters = fuzzy_two_clusters(features, weights, settings.seed);
+    const std::size_t none = std::size_t(-1);
+    std::vector<std::size_t> local(mesh.number_of_faces(), none);
+    for(std::size_t i = 0; i < faces.size(); ++i) local[faces[i]] = i;
+    const std::vector<std::size_t> labels = graph_cut_labels(mesh, faces, local, clusters.membership, lambda);
+    double area = 0.;
+    for(double w : weights) area += w;
+    split.parts = merge_small_parts(mesh, connected_parts(mesh, faces, local, labels), least_part_fraction * area);
+    if(split.parts.size() < 2) split.parts.clear();
+  }
+  split.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return split;
+}
+
+// The splits of the segments `examined` (indices into `faces_of`), in parallel: each of the
+// `threads` workers takes whole segments (the detection on a small segment keeps one core busy
+// poorly), the threads left over going to the detections themselves.
+inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
+                                         const std::vector<std::vector<std::size_t>>& faces_of,
+                                         const std::vector<std::size_t>& examined,
+                                         const Segmentation_settings& settings, double lambda)
+{
+  std::vector<Split> splits(examined.size());
+  if(examined.empty()) return splits;
+  const unsigned workers = unsigned((std::min<std::size_t>)(settings.threads, examined.size()));
+  const unsigned inner = (std::max)(1u, settings.threads / workers);
+  // Round robin over the segments, sorted by decreasing size: the work is shared evenly.
+  parallel_for(workers, workers, [&](unsigned worker, std::size_t, std::size_t) {
+    for(std::size_t k = worker; k < examined.size(); k += workers)
+      splits[k] = split_segment(mesh, faces_of[examined[k]], settings, lambda, inner);
+  });
+  return splits;
+}
+
+// The parts merged, smallest first, into their neighbours until at most `count` remain.
+inline std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_mesh& mesh,
+                                                           std::vector<std::vector<std::size_t>> parts,
+                                                           std::size_t count)
+{
+  while(parts.size() > count) {
+    double smallest = std::numeric_limits<double>::infinity();
+    for(const auto& p : parts) {
+      double a = 0.;
+      for(std::size_t f : p) a += mesh.areas[f];
+      smallest = (std::min)(smallest, a);
+    }
+    const std::size_t before = parts.size();
+    parts = merge_small_parts(mesh, std::move(parts), std::nextafter(smallest, std::numeric_limits<double>::infinity()));
+    if(parts.size() == before) break; // no neighbours: cannot happen for the parts of a connected segment
+  }
+  return parts;
+}
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_SPLIT_H
