@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <limits>
 #include <functional>
+#include <type_traits>
 #include <stdexcept>
 #include <cmath>
 #include <vector>
@@ -117,14 +118,15 @@ class Closest_triangle_field
 {
 public:
   static constexpr bool has_normals = true;
-  struct Hint {};
+  // The match found, a hint for the exact search of the same point.
+  typedef Triangle_matcher::Hint Hint;
 
   // `closest_triangles`: per voxel (index (k n + j) n + i) the triangle closest to its centre,
   // or -1; `origin`: the corner of the grid, `voxel_size` and `resolution` its geometry.
   Closest_triangle_field(const std::vector<Dtriangle>& triangles, const Triangle_matcher& exact,
                          std::vector<std::int32_t> closest_triangles, const std::array<double, 3>& origin,
                          double voxel_size, std::size_t resolution)
-    : exact_(exact), closest_triangles_(std::move(closest_triangles)), origin_(origin),
+    : triangles_(triangles), exact_(exact), closest_triangles_(std::move(closest_triangles)), origin_(origin),
       voxel_size_(voxel_size), resolution_(long(resolution))
   {
     corners_.reserve(triangles.size());
@@ -135,7 +137,7 @@ public:
     }
   }
 
-  std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint&, bool) const
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint& hint, bool) const
   {
     // The cell of voxel centres around p.
     std::array<long, 3> corner;
@@ -156,14 +158,14 @@ public:
       if(d2 < best) {
         best = d2;
         match = {on_triangle, normals_[std::size_t(t)]};
+        hint = {Dpoint(on_triangle.x(), on_triangle.y(), on_triangle.z()), triangles_.begin() + t};
       }
     }
-    if(count > 0) return match;
-    Triangle_matcher::Hint hint;
-    return exact_.closest(p, hint, false);
+    return count > 0 ? match : exact_.closest(p, hint, false);
   }
 
 private:
+  const std::vector<Dtriangle>& triangles_;
   const Triangle_matcher& exact_;
   std::vector<std::array<Eigen::Vector3d, 3>> corners_;
   std::vector<Eigen::Vector3d> normals_;
@@ -241,18 +243,18 @@ struct Isp_sums
 };
 
 // Matches kept from one iteration to the next: the searches for nearby queries start there.
-template <typename Matcher>
+template <typename Hint>
 struct Match_hints
 {
   explicit Match_hints(std::size_t n) : hints(n), has_hint(n, 0) {}
-  std::vector<typename Matcher::Hint> hints;
+  std::vector<Hint> hints;
   std::vector<char> has_hint;
 };
 
 // The sums of the fit with weights of width `width` sigma.
 template <typename Matcher>
 Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane, const Matcher& matcher,
-                  const Isp_settings& settings, double width, Match_hints<Matcher>& match_hints)
+                  const Isp_settings& settings, double width, Match_hints<typename Matcher::Hint>& match_hints)
 {
   std::vector<typename Matcher::Hint>& hints = match_hints.hints;
   std::vector<char>& has_hint = match_hints.has_hint;
@@ -363,7 +365,7 @@ namespace isp {
 
 template <typename Matcher>
 Isp_result coarse_phase(const std::vector<Eigen::Vector3d>& samples, Dplane plane, const Matcher& matcher,
-                        const Isp_settings& settings, Match_hints<Matcher>& hints,
+                        const Isp_settings& settings, Match_hints<typename Matcher::Hint>& hints,
                         const std::function<bool(const Dplane&)>& abandon)
 {
   constexpr unsigned max_iterations = 12;
@@ -384,7 +386,7 @@ Isp_result coarse_phase(const std::vector<Eigen::Vector3d>& samples, Dplane plan
 // its support (at sigma) and the iterations. Returns the sums of the best plane.
 template <typename Matcher>
 Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher,
-                        const Isp_settings& settings, double width, const Isp_sums& start, Match_hints<Matcher>& hints,
+                        const Isp_settings& settings, double width, const Isp_sums& start, Match_hints<typename Matcher::Hint>& hints,
                         const std::function<bool(const Dplane&)>& abandon, double min_gain, Isp_result& result)
 {
   constexpr double max_step_factor = 32.;
@@ -425,7 +427,7 @@ Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Match
 // walk made with approximate matches: from its top, the exact optimum is a step or two away.
 template <typename Matcher>
 Isp_sums polish(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher, const Isp_settings& settings,
-                double width, const Isp_sums& start, Match_hints<Matcher>& hints, unsigned max_steps, Isp_result& result)
+                double width, const Isp_sums& start, Match_hints<typename Matcher::Hint>& hints, unsigned max_steps, Isp_result& result)
 {
   Isp_sums best = start;
   result.support = best.support / double(samples.size());
@@ -456,9 +458,16 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
                                       const std::function<bool(const Dplane&)>& abandon = {},
                                       const Walk_matcher* walk_matcher = nullptr)
 {
-  Match_hints<Matcher> hints(samples.size());
-  Match_hints<Walk_matcher> walk_hints(walk_matcher != nullptr ? samples.size() : 0);
   const bool walks = walk_matcher != nullptr;
+  // When the walk's matches are hints of the exact search (Closest_triangle_field), the exact
+  // searches that end the walk start from them: most are then one test of a leaf.
+  constexpr bool shared_hints = std::is_same<typename Matcher::Hint, typename Walk_matcher::Hint>::value;
+  Match_hints<typename Matcher::Hint> hints(samples.size());
+  Match_hints<typename Walk_matcher::Hint> own_walk_hints(shared_hints || !walks ? 0 : samples.size());
+  auto& walk_hints = [&]() -> auto& {
+    if constexpr(shared_hints) return hints;
+    else return own_walk_hints;
+  }();
   std::vector<Eigen::Vector3d> coarse_samples(samples.begin(), samples.begin() + std::ptrdiff_t(samples.size() / 8));
   if(coarse_samples.size() < 100) coarse_samples.clear(); // too few to locate anything
   Dplane start = plane;
