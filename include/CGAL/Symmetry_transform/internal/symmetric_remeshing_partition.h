@@ -133,6 +133,14 @@ public:
       }
       d.a = m_.area[f];
     }
+    // Per halfedge the planes it lies on, per face the planes through which it has a mirror.
+    edge_planes_.assign(3 * m_.number_of_faces(), 0);
+    mirror_planes_.assign(m_.number_of_faces(), 0);
+    for(std::size_t h = 0; h < edge_planes_.size(); ++h)
+      edge_planes_[h] = vertex_planes_[m_.source(h)] & vertex_planes_[m_.target(h)];
+    for(std::size_t f = 0; f < m_.number_of_faces(); ++f)
+      for(std::size_t j = 0; j < k_; ++j)
+        if(mirror_[f * k_ + j] != none) mirror_planes_[f] |= std::uint64_t(1) << j;
   }
 
   std::size_t transforms() const { return t_; }
@@ -188,8 +196,9 @@ private:
     std::uint32_t face, label;
     bool operator>(const Candidate& c) const
     {
-      return error > c.error || (error == c.error && (face > c.face || (face == c.face && label > c.label)));
+      return error > c.error || (error == c.error && key() > c.key());
     }
+    std::uint64_t key() const { return (std::uint64_t(face) << 32) | label; }
   };
 
   // Face data of face f in the frame of transform i.
@@ -207,10 +216,9 @@ private:
     const Face_data& d = face_[f];
     const Target& t = target_[label];
     double n2 = 0., c2 = 0.;
-    for(int i = 0; i < 3; ++i) {
-      n2 += (d.n[i] - t.n[i]) * (d.n[i] - t.n[i]);
-      c2 += (d.c[i] - t.c[i]) * (d.c[i] - t.c[i]);
-    }
+    for(int i = 0; i < 3; ++i) n2 += (d.n[i] - t.n[i]) * (d.n[i] - t.n[i]);
+    if(wp_ > 0.)
+      for(int i = 0; i < 3; ++i) c2 += (d.c[i] - t.c[i]) * (d.c[i] - t.c[i]);
     return d.a * (wn_ * n2 + wp_ * c2);
   }
 
@@ -260,12 +268,6 @@ private:
     return false;
   }
 
-  // Whether halfedge h lies on plane j.
-  bool on_plane(std::size_t h, std::size_t j) const
-  {
-    return ((vertex_planes_[m_.source(h)] & vertex_planes_[m_.target(h)]) >> j) & 1u;
-  }
-
   void assign(std::size_t f, std::size_t label)
   {
     stack_.clear();
@@ -282,10 +284,9 @@ private:
       for(int h = 0; h < 3; ++h) {
         const std::size_t n = neighbor_[3 * g + h];
         if(n == none || label_[n] != none) continue;
-        bool blocked = false; // a patch of the identity or of plane j does not cross plane j where the face has a mirror
-        for(std::size_t j = 0; j < k_ && !blocked; ++j)
-          blocked = (i == 0 || i == j + 1) && mirror_[g * k_ + j] != none && on_plane(3 * g + h, j);
-        if(blocked) continue;
+        // A patch of the identity or of plane j does not cross plane j where the face has a mirror.
+        if(edge_planes_[3 * g + h] & mirror_planes_[g] & (i == 0 ? ~std::uint64_t(0) : std::uint64_t(1) << (i - 1)))
+          continue;
         // An entry that cannot beat one already queued for the face is left out (every queued
         // entry succeeds if its face is still free when popped: patches only grow).
         const double en = error(n, l);
@@ -632,6 +633,7 @@ private:
   std::vector<Face_data> face_;
   std::vector<Target> target_;
   std::vector<std::size_t> neighbor_;
+  std::vector<std::uint64_t> edge_planes_, mirror_planes_;
   std::vector<double> patch_area_, best_;
   std::vector<char> disabled_;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
