@@ -424,7 +424,7 @@ Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Match
 
 // Plain ISP steps from result.plane, whose sums are `start`, while they raise the mean weight:
 // at most `max_steps`, and none after a step below 1e-7 (a converged exact symmetry). It ends a
-// walk made with approximate matches: from its top, the exact optimum is a step or two away.
+// walk made with approximate matches.
 template <typename Matcher>
 Isp_sums polish(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher, const Isp_settings& settings,
                 double width, const Isp_sums& start, Match_hints<typename Matcher::Hint>& hints, unsigned max_steps, Isp_result& result)
@@ -507,10 +507,11 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   }
   const double width = climb(*walk_matcher, walk_hints);
   if(abandon && abandon(fine.plane)) return fine;
-  // From the top of the walk, the exact optimum is a step away on an approximate symmetry (whose
-  // ridge is flat: more steps would creep), and a few Gauss-Newton steps on an exact one.
+  // The walk ends with exact matches: on an exact symmetry, a few Gauss-Newton steps from the top
+  // of the walk reach the exact optimum; on an approximate one, whose ridge is flat (steps would
+  // creep along it), the top of the walk stays, and its support is measured exactly.
   isp::polish(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints), hints,
-              width < 1. ? 4 : 1, fine);
+              width < 1. ? 4 : 0, fine);
   return fine;
 }
 
