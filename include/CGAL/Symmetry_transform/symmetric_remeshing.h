@@ -103,8 +103,9 @@ A proxy is a plane that may cover up to one connected patch per transform: the i
 reflection through each of `planes`. The faces that cross a plane are first split along it.
 Lloyd iterations then alternate:
 - flooding, in increasing error, from one seed face per proxy: when a face joins a patch, its
-  neighbours are queued for that patch, and the face nearest to its mirror image through a plane
-  (found with `CGAL::AABB_tree`) is offered to the mirrored patch of the same proxy;
+  neighbours are queued for that patch, and the face whose centroid is nearest to the mirror image
+  of its centroid through a plane (found with `CGAL::Kd_tree`, within 2% of the bounding box
+  diagonal) is offered to the mirrored patch of the same proxy;
 - fitting of each proxy over all its patches, each moved back by its transform;
 - teleportation of whole proxies (the cheapest merge of two neighbours frees a proxy for the
   worst region) and of patches (a patch of less than 5% of its proxy's largest patch is closed
@@ -331,18 +332,9 @@ bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRang
     std::cerr << "Symmetric VSA: " << input_faces.size() << " faces, " << m.number_of_faces() << " after splitting along "
               << settings.planes.size() << " plane(s) (" << seconds() << " s)\n";
 
-  // Mirror faces: the face nearest the reflected centroid, within 2% of the diagonal.
-  std::vector<internal::Dtriangle> soup;
-  for(const auto& f : m.faces) {
-    auto p = [&](int i) { return internal::Dpoint(m.points[f[i]].x(), m.points[f[i]].y(), m.points[f[i]].z()); };
-    soup.emplace_back(p(0), p(1), p(2));
-  }
-  std::optional<internal::Triangle_matcher> matcher;
-  if(!settings.planes.empty()) matcher.emplace(soup);
+  // Mirror faces: the face whose centroid is nearest the reflected centroid, within 2% of the diagonal.
   const std::vector<std::size_t> mirror =
-    settings.planes.empty() ? std::vector<std::size_t>()
-                            : internal::mirror_faces(m, settings.planes, soup, *matcher, 0.02 * m.diagonal,
-                                                     settings.strongest_plane_only, settings.threads);
+    internal::mirror_faces(m, settings.planes, 0.02 * m.diagonal, settings.strongest_plane_only, settings.threads);
   if(settings.verbose && !settings.planes.empty()) {
     std::size_t count = 0;
     for(std::size_t g : mirror) count += g != Mesh::none ? 1 : 0;
@@ -378,17 +370,10 @@ bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRang
      is_default_parameter<NamedParameters, internal_np::st_output_mesh_t>::value)
     return false;
 
-  // Nearest working vertex to a point: a vertex of the nearest face.
-  auto nearest_vertex = [&](const Eigen::Vector3d& p) -> std::size_t {
-    if(!matcher) return Mesh::none;
-    internal::Triangle_matcher::Hint hint;
-    matcher->closest(p, hint, false);
-    const auto& face = m.faces[std::size_t(hint.second - soup.begin())];
-    std::size_t best = face[0];
-    for(std::size_t v : face)
-      if((m.points[v] - p).squaredNorm() < (m.points[best] - p).squaredNorm()) best = v;
-    return best;
-  };
+  // Nearest working vertex to a point.
+  std::optional<internal::Nearest_point> nearest;
+  if(!settings.planes.empty()) nearest.emplace(m.points);
+  auto nearest_vertex = [&nearest](const Eigen::Vector3d& p) { return nearest ? (*nearest)(p).first : Mesh::none; };
   internal::Symmetric_meshing extraction(m, partition, settings.planes, vertex_planes, nearest_vertex);
   internal::Remeshing_output out = extraction.run(meshing);
   if(settings.verbose)

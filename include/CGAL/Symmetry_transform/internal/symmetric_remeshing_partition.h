@@ -11,7 +11,7 @@
 // `proxy * transforms + transform` (transform 0: the identity, j + 1: plane j).
 //
 // Flooding: one priority queue, in increasing error, as in VSA; when a face joins a patch, its
-// neighbours are queued for that patch and the face nearest to its mirror image (an AABB tree
+// neighbours are queued for that patch and the face nearest to its mirror image (a Kd-tree
 // query made once) is offered to the mirrored patch. The mirror joins at once if it fits that
 // patch about as well as the face fits its own (on an exactly symmetric mesh it always does, so
 // that the partition stays mirror-symmetric whatever the order of equal errors), else it is
@@ -58,30 +58,25 @@ struct Remeshing_settings
   bool verbose = false;
 };
 
-// Per face and plane, the face nearest to the mirror image of its centroid, or `none` if that
-// image is farther than `tolerance` from the surface (no symmetric counterpart) or is the face
-// itself. With `strongest_only`, a face keeps only the plane whose image lies closest.
+// Per face and plane, the face whose centroid lies nearest to the mirror image of its centroid
+// (a Kd-tree query made once), or `none` if that is farther than `tolerance` (no symmetric
+// counterpart) or the face itself. With `strongest_only`, a face keeps only the plane whose
+// image lies closest.
 inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std::vector<Dplane>& planes,
-                                             const std::vector<Dtriangle>& triangles, const Triangle_matcher& matcher,
                                              double tolerance, bool strongest_only, unsigned threads)
 {
   const std::size_t nf = m.number_of_faces(), k = planes.size();
   std::vector<std::size_t> mirror(nf * k, Remeshing_mesh::none);
   if(k == 0) return mirror;
+  const Nearest_point nearest(m.centroid);
   std::vector<double> distance(nf * k, 0.);
   parallel_for(nf, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-    for(std::size_t j = 0; j < k; ++j) {
-      Triangle_matcher::Hint hint;
-      bool use_hint = false;
-      for(std::size_t f = begin; f < end; ++f) {
-        const Eigen::Vector3d image = planes[j].reflect(m.centroid[f]);
-        const Eigen::Vector3d closest = matcher.closest(image, hint, use_hint).first;
-        use_hint = true;
-        const std::size_t g = std::size_t(hint.second - triangles.begin());
-        distance[f * k + j] = (closest - image).norm();
-        if(distance[f * k + j] <= tolerance && g != f) mirror[f * k + j] = g;
+    for(std::size_t f = begin; f < end; ++f)
+      for(std::size_t j = 0; j < k; ++j) {
+        const auto [g, d] = nearest(planes[j].reflect(m.centroid[f]));
+        distance[f * k + j] = d;
+        if(d <= tolerance && g != f) mirror[f * k + j] = g;
       }
-    }
   });
   if(strongest_only && k > 1)
     for(std::size_t f = 0; f < nf; ++f) {

@@ -1,0 +1,235 @@
+#!/usr/bin/python3
+# Copyright (c) 2026 The CGAL Symmetry_transform project.
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Author(s): The CGAL Symmetry_transform developers
+"""Renders the manual's figures of symmetric remeshing from the PLY files of the example.
+
+usage (from anywhere; Debian's python3, for which python3-vtk9 is built):
+
+    /usr/bin/python3 doc/Symmetry_transform/render_remeshing_figures.py [--build-dir DIR]
+        [--resolution N] [--proxies K[,K...]] [MESH ...]
+
+It builds the example symmetric_remeshing (Release) in DIR (default: build/ of the repository),
+runs it on meshes of CGAL's sample data (DIR/data/meshes, unpacked by scripts/setup.sh, which
+it calls if needed) with the strongest plane detected at grid resolution N (default 64) and K
+proxies (default 50 and 100), and renders, for each mesh, doc/Symmetry_transform/fig/
+remeshing_<mesh>.png: one row per K, the symmetric VSA (K proxies) beside CGAL's VSA (K
+proxies), the faces coloured by their symmetry error as the example writes it (the distance from
+the mirror image of the face's centroid to the surface: dark blue symmetric, yellow 2 % of the
+diagonal or more; the thesis's Figure 5.6), edges drawn, the plane's trace on the surface in
+red. MESH names files of DIR/data/meshes without ".off" (default: cow bull).
+
+Re-running it overwrites the figures. Debian packages: as for render_figures.py (whose helpers
+it reuses), python3-vtk9, xvfb and xauth; without a DISPLAY it runs itself under xvfb-run.
+"""
+
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import render_figures as rf  # noqa: E402  (its helpers: run, ply_comments, text, rectangle, VIEWS, ...)
+
+ROOT, FIG_DIR = rf.ROOT, rf.FIG_DIR
+
+VIEWS = dict(rf.VIEWS)
+VIEWS.update({
+    "cow": {"towards": (0.55, 0.35, 1.0), "up": (0, 1, 0)},
+})
+
+# The example's ramp of the symmetry error (0 to 2 % of the diagonal).
+RAMP = [(20, 30, 110), (30, 150, 160), (120, 200, 80), (250, 230, 40)]
+PANEL_W, PANEL_H, LEGEND_H = 460, 360, 60
+
+
+def build_example(build_dir):
+    data_dir = os.path.join(build_dir, "data")
+    if not os.path.isfile(os.path.join(data_dir, "meshes", "bull.off")):
+        rf.run(["bash", os.path.join(ROOT, "scripts", "setup.sh")], env=dict(os.environ, DATA_DIR=data_dir))
+    rf.run(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release",
+            "-DSYMMETRY_TRANSFORM_BUILD_EXAMPLES=ON", "-DSYMMETRY_TRANSFORM_DATA_DIR=" + data_dir],
+           stdout=subprocess.DEVNULL)
+    rf.run(["cmake", "--build", build_dir, "--target", "symmetric_remeshing", "-j", str(os.cpu_count() or 2)])
+    return os.path.join(build_dir, "examples", "Symmetry_transform", "symmetric_remeshing"), data_dir
+
+
+def parse_run(out):
+    """The plane (a, b, c, d) and the table rows {name: (vertices, faces, rms, symmetry)} printed
+    by the example."""
+    plane = None
+    m = re.search(r"plane ([-0-9.eE+]+) ([-0-9.eE+]+) ([-0-9.eE+]+) ([-0-9.eE+]+)", out)
+    if m:
+        plane = tuple(float(m.group(i)) for i in range(1, 5))
+    rows = {}
+    for line in out.splitlines():
+        m = re.match(r"\s+(symmetric VSA|CGAL VSA),\s+K = (\d+)\s+(\d+)\s+(\d+)\s+\S+\s+(\S+)\s+\S+\s+(\S+)\s+(\S+)", line)
+        if m:
+            rows[(m.group(1), int(m.group(2)))] = (int(m.group(3)), int(m.group(4)), float(m.group(5)),
+                                                   float(m.group(7)))
+    return plane, rows
+
+
+def load(path):
+    reader = vtk.vtkPLYReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def surface_actor(mesh):
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputData(mesh)
+    mapper.SetScalarModeToUseCellFieldData()
+    mapper.SelectColorArray("RGBA")
+    mapper.SetColorModeToDirectScalars()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    prop = actor.GetProperty()
+    prop.SetAmbient(0.3)
+    prop.SetDiffuse(0.75)
+    prop.EdgeVisibilityOn()
+    prop.SetEdgeColor(0.12, 0.12, 0.12)
+    prop.SetLineWidth(1.0)
+    return actor
+
+
+def trace_actor(mesh, plane):
+    """The curve where the plane cuts the surface."""
+    a, b, c, d = plane
+    norm2 = a * a + b * b + c * c
+    cut = vtk.vtkPlane()
+    cut.SetNormal(a, b, c)
+    cut.SetOrigin(-d * a / norm2, -d * b / norm2, -d * c / norm2)
+    cutter = vtk.vtkCutter()
+    cutter.SetInputData(mesh)
+    cutter.SetCutFunction(cut)
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(cutter.GetOutputPort())
+    mapper.ScalarVisibilityOff()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(0.85, 0.1, 0.1)
+    actor.GetProperty().SetLineWidth(2.5)
+    actor.GetProperty().LightingOff()
+    return actor
+
+
+def legend_renderer(width, height, mesh_name):
+    ren = vtk.vtkRenderer()
+    ren.SetBackground(1, 1, 1)
+    ren.SetViewport(0, 0, 1, LEGEND_H / height)
+    ramp = vtk.vtkColorTransferFunction()
+    for i, c in enumerate(RAMP):
+        ramp.AddRGBPoint(2.0 * i / (len(RAMP) - 1.), *[v / 255. for v in c])
+    bar = vtk.vtkScalarBarActor()
+    bar.SetLookupTable(ramp)
+    bar.SetOrientationToHorizontal()
+    bar.SetNumberOfLabels(3)
+    bar.SetLabelFormat("%.0f %%")
+    bar.SetUnconstrainedFontSize(True)
+    label = bar.GetLabelTextProperty()
+    label.SetFontSize(14)
+    label.SetColor(0.1, 0.1, 0.1)
+    label.ShadowOff()
+    label.ItalicOff()
+    label.BoldOff()
+    bar.SetBarRatio(0.45)
+    bar.DrawFrameOff()
+    bar_x, bar_w = width / 2. - 20, 240
+    bar.GetPositionCoordinate().SetCoordinateSystemToViewport()
+    bar.GetPositionCoordinate().SetValue(bar_x, 2)
+    bar.GetPosition2Coordinate().SetCoordinateSystemToViewport()
+    bar.GetPosition2Coordinate().SetValue(bar_w, LEGEND_H - 8)
+    ren.AddActor2D(bar)
+    ren.AddActor2D(rf.text(mesh_name + ".off", 18, 12, LEGEND_H / 2 - 8))
+    ren.AddActor2D(rf.text("symmetry error (of the diagonal)", 15, bar_x - 12, 14, justify_right=True))
+    return ren
+
+
+def render_figure(mesh_name, panels, plane, png):
+    """panels: rows of (ply path, caption), two per row."""
+    rows = len(panels)
+    width, height = 2 * PANEL_W, rows * PANEL_H + LEGEND_H
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    window.SetSize(width, height)
+    meshes = [[load(path) for path, _ in row] for row in panels]
+    bounds = meshes[0][0].GetBounds()
+    view = VIEWS.get(mesh_name, rf.DEFAULT_VIEW)
+    camera = vtk.vtkCamera()
+    centre = [(bounds[2 * i] + bounds[2 * i + 1]) / 2. for i in range(3)]
+    camera.SetFocalPoint(centre)
+    camera.SetPosition([c + t for c, t in zip(centre, view["towards"])])
+    camera.SetViewUp(view["up"])
+    camera.SetViewAngle(25)
+    first = True
+    for r, row in enumerate(panels):
+        for c, (path, caption) in enumerate(row):
+            ren = vtk.vtkRenderer()
+            ren.SetBackground(1, 1, 1)
+            ren.SetViewport(c / 2., (LEGEND_H + (rows - 1 - r) * PANEL_H) / height,
+                            (c + 1) / 2., (LEGEND_H + (rows - r) * PANEL_H) / height)
+            ren.SetUseFXAA(True)
+            mesh = meshes[r][c]
+            ren.AddActor(surface_actor(mesh))
+            if plane:
+                ren.AddActor(trace_actor(mesh, plane))
+            ren.AddActor2D(rf.text(caption, 15, 10, PANEL_H - 24, background=True))
+            ren.AddActor2D(rf.rectangle((0.8, 0.8, 0.8), 0, 0, PANEL_W - 1, PANEL_H - 1, filled=False))
+            ren.SetActiveCamera(camera)
+            window.AddRenderer(ren)
+            if first:
+                ren.ResetCamera(bounds)
+                camera.Zoom(view.get("zoom", 1.15))
+                first = False
+    window.AddRenderer(legend_renderer(width, height, mesh_name))
+    window.Render()
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetCompressionLevel(9)
+    writer.SetFileName(png)
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.Write()
+    print("wrote %s (%d KB)" % (png, (os.path.getsize(png) + 1023) // 1024), flush=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("meshes", nargs="*", default=["cow", "bull"])
+    parser.add_argument("--build-dir", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--resolution", type=int, default=64)
+    parser.add_argument("--proxies", default="50,100")
+    args = parser.parse_args()
+
+    example, data_dir = build_example(os.path.abspath(args.build_dir))
+    work = os.path.join(os.path.abspath(args.build_dir), "doc_figures")
+    os.makedirs(work, exist_ok=True)
+    os.makedirs(FIG_DIR, exist_ok=True)
+    for name in args.meshes:
+        panels, plane = [], None
+        for k in [int(k) for k in args.proxies.split(",")]:
+            output = os.path.join(work, "remeshing_%s_%d.ply" % (name, k))
+            out = rf.run([example, os.path.join(data_dir, "meshes", name + ".off"), "--resolution",
+                          str(args.resolution), "--proxies", str(k), "--output", output],
+                         stdout=subprocess.PIPE, text=True).stdout
+            sys.stdout.write(out)
+            plane, rows = parse_run(out)
+
+            def caption(method):
+                vertices, faces, rms, symmetry = rows[(method, k)]
+                return "%s, K = %d: %d faces, RMS %.1f, sym. %.1f" % (method, k, faces, rms, symmetry)
+            panels.append([(output, caption("symmetric VSA")),
+                           (output[:-4] + "_cgal_vsa.ply", caption("CGAL VSA"))])
+        render_figure(name, panels, plane, os.path.join(FIG_DIR, "remeshing_%s.png" % name))
+
+
+if __name__ == "__main__":
+    vtk = rf.vtk_with_display(__file__)
+    main()
