@@ -9,7 +9,8 @@ usage (from anywhere; Debian's python3, for which python3-vtk9 is built):
     /usr/bin/python3 doc/Symmetry_transform/render_remeshing_figures.py [--build-dir DIR]
         [--resolution N] [--proxies K[,K...]] [MESH ...]
 
-It builds the example symmetric_remeshing (Release) in DIR (default: build/ of the repository),
+It builds the example symmetric_remeshing (Release, with principal_symmetries, through
+render_figures.py) in DIR (default: build/ of the repository),
 runs it on meshes of CGAL's sample data (DIR/data/meshes, unpacked by scripts/setup.sh, which
 it calls if needed) with the strongest plane detected at grid resolution N (default 64) and K
 proxies (default 50 and 100), and renders, for each mesh, doc/Symmetry_transform/fig/
@@ -34,10 +35,11 @@ import render_figures as rf  # noqa: E402  (its helpers: run, ply_comments, text
 
 ROOT, FIG_DIR = rf.ROOT, rf.FIG_DIR
 
-VIEWS = dict(rf.VIEWS)
-VIEWS.update({
-    "cow": {"towards": (0.55, 0.35, 1.0), "up": (0, 1, 0)},
-})
+# Seen from above and aside, so that both sides of the plane show.
+VIEWS = {
+    "cow": {"towards": (0.35, 1.0, 0.75), "up": (0, 1, 0)},
+    "bull": {"towards": (-0.3, 1.0, 0.8), "up": (0, 1, 0)},
+}
 
 # The example's ramp of the symmetry error (0 to 2 % of the diagonal).
 RAMP = [(20, 30, 110), (30, 150, 160), (120, 200, 80), (250, 230, 40)]
@@ -45,12 +47,8 @@ PANEL_W, PANEL_H, LEGEND_H = 460, 360, 60
 
 
 def build_example(build_dir):
-    data_dir = os.path.join(build_dir, "data")
-    if not os.path.isfile(os.path.join(data_dir, "meshes", "bull.off")):
-        rf.run(["bash", os.path.join(ROOT, "scripts", "setup.sh")], env=dict(os.environ, DATA_DIR=data_dir))
-    rf.run(["cmake", "-S", ROOT, "-B", build_dir, "-DCMAKE_BUILD_TYPE=Release",
-            "-DSYMMETRY_TRANSFORM_BUILD_EXAMPLES=ON", "-DSYMMETRY_TRANSFORM_DATA_DIR=" + data_dir],
-           stdout=subprocess.DEVNULL)
+    """Configures DIR and unpacks the data as render_figures.py does, then builds symmetric_remeshing."""
+    _, data_dir = rf.build_example(build_dir)
     rf.run(["cmake", "--build", build_dir, "--target", "symmetric_remeshing", "-j", str(os.cpu_count() or 2)])
     return os.path.join(build_dir, "examples", "Symmetry_transform", "symmetric_remeshing"), data_dir
 
