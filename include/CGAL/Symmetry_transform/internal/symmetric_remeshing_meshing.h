@@ -8,7 +8,7 @@
 // The output mesh of symmetric remeshing from the patches (thesis, Section 5.1.2, "Point
 // Correspondences" and "Triangulation"), in the steps of CGAL's VSA (extract_mesh):
 // - anchors where three or more patch boundaries meet, plus the vertices on a plane of symmetry
-//   where a patch boundary leaves the plane (the split vertices of the thesis);
+//   where a patch boundary crosses the plane (the split vertices of the thesis);
 // - boundary chords between anchors, subdivided at their farthest vertex while it lies farther
 //   than `subdivision_ratio` (times the mean edge length, or the chord length) from the chord;
 // - the anchors of corresponding boundaries completed by each other's mirror images (the mesh
@@ -120,16 +120,21 @@ private:
     for(std::size_t v = 0; v < m_.points.size(); ++v) {
       if(boundary_count(v) >= 6) { attach(v); continue; }
       if(vertex_planes_[v] == 0) continue;
-      // On a plane: an anchor where a boundary leaves the plane.
-      for(std::size_t i = m_.vertex_face_begin[v]; i < m_.vertex_face_begin[v + 1] && anchor_[v] == none; ++i)
-        for(int c = 0; c < 3; ++c) {
-          const std::size_t h = 3 * m_.vertex_face[i] + c;
-          const std::size_t other = m_.source(h) == v ? m_.target(h) : m_.target(h) == v ? m_.source(h) : none;
-          if(other != none && is_boundary(h) && (vertex_planes_[v] & ~vertex_planes_[other]) != 0) {
-            attach(v);
-            break;
+      // On a plane: an anchor where a boundary crosses the plane (boundary edges to both of its
+      // sides). The middle of a chord symmetric about the plane lies there, and its tag (the
+      // nearer end of the chord) would otherwise be a tie.
+      for(std::size_t j = 0; j < planes_.size() && anchor_[v] == none; ++j) {
+        if(!((vertex_planes_[v] >> j) & 1u)) continue;
+        bool above = false, below = false;
+        for(std::size_t i = m_.vertex_face_begin[v]; i < m_.vertex_face_begin[v + 1]; ++i)
+          for(int c = 0; c < 3; ++c) {
+            const std::size_t h = 3 * m_.vertex_face[i] + c;
+            const std::size_t other = m_.source(h) == v ? m_.target(h) : m_.target(h) == v ? m_.source(h) : none;
+            if(other == none || !is_boundary(h) || ((vertex_planes_[other] >> j) & 1u)) continue;
+            (signed_distance(planes_[j], m_.points[other]) > 0. ? above : below) = true;
           }
-        }
+        if(above && below) attach(v);
+      }
     }
   }
 
@@ -250,9 +255,19 @@ private:
         const std::size_t w = nearest_vertex_(image);
         if(w == none || anchor_[w] != none || (m_.points[w] - image).norm() > m_.average_edge_length) continue;
         image_proxies.clear();
-        if(boundary_count(w, &image_proxies) >= 2 && image_proxies == proxies) attach(w);
+        if(boundary_count(w, &image_proxies) >= 2 && image_proxies == proxies && !next_to_anchor(w)) attach(w);
       }
     }
+  }
+
+  // Whether a vertex shares an edge with an anchor (anchors that close make slivers and
+  // non-manifold fans).
+  bool next_to_anchor(std::size_t v) const
+  {
+    for(std::size_t i = m_.vertex_face_begin[v]; i < m_.vertex_face_begin[v + 1]; ++i)
+      for(std::size_t w : m_.faces[m_.vertex_face[i]])
+        if(w != v && anchor_[w] != none) return true;
+    return false;
   }
 
   void triangulate()
