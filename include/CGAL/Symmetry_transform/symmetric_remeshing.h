@@ -11,6 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/symmetric_remeshing_meshing.h>
 #include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mesh.h>
+#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mirrors.h>
 #include <CGAL/Symmetry_transform/internal/symmetric_remeshing_partition.h>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>

@@ -14,18 +14,12 @@
 #include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
 #include <CGAL/Symmetry_transform/internal/shape_input.h>
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -40,39 +34,6 @@ inline Eigen::Vector3d reflect_vector(const Dplane& p, const Eigen::Vector3d& v)
 }
 
 inline double signed_distance(const Dplane& p, const Eigen::Vector3d& x) { return p.normal.dot(x) - p.offset; }
-
-// The nearest of a set of points to a query (CGAL::Kd_tree), with its index. Queries are
-// thread-safe once constructed.
-class Nearest_point
-{
-  typedef CGAL::Search_traits_adapter<std::size_t, CGAL::Pointer_property_map<Dpoint>::const_type, CGAL::Search_traits_3<Dkernel>> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-
-public:
-  explicit Nearest_point(const std::vector<Eigen::Vector3d>& points)
-  {
-    for(const Eigen::Vector3d& p : points) points_.emplace_back(p.x(), p.y(), p.z());
-    std::vector<std::size_t> indices(points_.size());
-    for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    tree_ = std::make_unique<Search::Tree>(indices.begin(), indices.end(), Search::Tree::Splitter(),
-                                           Traits(map()));
-    tree_->build();
-  }
-
-  // The index of the nearest point and its distance.
-  std::pair<std::size_t, double> operator()(const Eigen::Vector3d& q) const
-  {
-    const Search search(*tree_, Dpoint(q.x(), q.y(), q.z()), 1, 0., true,
-                        Search::Distance(map()));
-    return {search.begin()->first, std::sqrt(search.begin()->second)};
-  }
-
-private:
-  CGAL::Pointer_property_map<Dpoint>::const_type map() const { return CGAL::make_property_map(points_); }
-
-  std::vector<Dpoint> points_;
-  std::unique_ptr<Search::Tree> tree_;
-};
 
 struct Remeshing_mesh
 {

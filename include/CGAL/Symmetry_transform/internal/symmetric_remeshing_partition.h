@@ -25,8 +25,8 @@
 // transform, a_t the area of t and A_avg the mean face area: the area-weighted form of the
 // thesis's metric, which is L2,1 (CGAL's default) for alpha = 0.
 
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mesh.h>
+#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mirrors.h>
 
 #include <CGAL/Random.h>
 #include <CGAL/Variational_shape_approximation.h>
@@ -57,38 +57,6 @@ struct Remeshing_settings
   unsigned threads = 1;
   bool verbose = false;
 };
-
-// Per face and plane, the face whose centroid lies nearest to the mirror image of its centroid
-// (a Kd-tree query made once), or `none` if that is farther than `tolerance` (no symmetric
-// counterpart) or the face itself. With `strongest_only`, a face keeps only the plane whose
-// image lies closest.
-inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std::vector<Dplane>& planes,
-                                             double tolerance, bool strongest_only, unsigned threads)
-{
-  const std::size_t nf = m.number_of_faces(), k = planes.size();
-  std::vector<std::size_t> mirror(nf * k, Remeshing_mesh::none);
-  if(k == 0) return mirror;
-  const Nearest_point nearest(m.centroid);
-  std::vector<double> distance(nf * k, 0.);
-  parallel_for(nf, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-    for(std::size_t f = begin; f < end; ++f)
-      for(std::size_t j = 0; j < k; ++j) {
-        const auto [g, d] = nearest(planes[j].reflect(m.centroid[f]));
-        distance[f * k + j] = d;
-        if(d <= tolerance && g != f) mirror[f * k + j] = g;
-      }
-  });
-  if(strongest_only && k > 1)
-    for(std::size_t f = 0; f < nf; ++f) {
-      std::size_t best = Remeshing_mesh::none;
-      for(std::size_t j = 0; j < k; ++j)
-        if(mirror[f * k + j] != Remeshing_mesh::none && (best == Remeshing_mesh::none || distance[f * k + j] < distance[f * k + best]))
-          best = j;
-      for(std::size_t j = 0; j < k; ++j)
-        if(j != best) mirror[f * k + j] = Remeshing_mesh::none;
-    }
-  return mirror;
-}
 
 class Symmetric_partition
 {
