@@ -121,8 +121,8 @@ area-weighted form of the thesis's combined metric, the \f$ L^{2,1} \f$ metric o
 
 The output mesh is extracted as in CGAL's VSA (anchors where three patches meet, boundary chords
 subdivided, a Dijkstra flooding of each patch from its anchors giving the triangles), with
-patches as regions, and symmetry enforced: vertices on a plane where a patch boundary leaves it
-become anchors; every anchor's mirror image, if it lies on a boundary of the same proxies, becomes
+patches as regions, and symmetry enforced: vertices on a plane where a patch boundary crosses it
+become anchors; every anchor's mirror image, if it lies on a boundary of the same proxies (and not next to an anchor), becomes
 an anchor too; anchors whose mirror images are mutually nearest among the anchors of the same
 proxies are moved to exact mirror positions (those on a plane onto the plane).
 With an empty range of planes, this is plain VSA.

@@ -12,7 +12,8 @@
 // - boundary chords between anchors, subdivided at their farthest vertex while it lies farther
 //   than `subdivision_ratio` (times the mean edge length, or the chord length) from the chord;
 // - the anchors of corresponding boundaries completed by each other's mirror images (the mesh
-//   vertex nearest the reflected anchor, if it lies on a boundary of the same proxies);
+//   vertex nearest the reflected anchor, if it lies on a boundary of the same proxies and not
+//   next to another anchor);
 // - the triangulation of each patch by multi-source Dijkstra from its anchors (each vertex
 //   takes the tag of its nearest anchor, chord vertices that of the nearer chord end): a face
 //   whose three vertices have three tags gives a triangle;
