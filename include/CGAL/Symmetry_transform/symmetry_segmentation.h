@@ -123,7 +123,7 @@ centres), and a graph cut on the dual graph (`CGAL::alpha_expansion_graphcut()`)
 labels, minimising the data cost \f$ \sum_f (A_f/\bar A)(-\log u_f) \f$ plus
 \f$ \lambda \sum_e (\ell_e/\bar\ell)/(1 + d_e/\bar d) \f$ over the cut edges, with
 \f$ d_e = \eta (1 - \cos\alpha_e) \f$ the angular distance of the two faces (Katz and Tal;
-\f$ \eta = 1 \f$ on concave edges, 0.1 on convex ones): boundaries are short and follow concave
+\f$ \eta = 1 \f$ on concave edges, 0 on convex ones): boundaries are short and follow concave
 creases. Each label is then split into its connected parts, and parts smaller than 3 % of the
 segment are merged into the neighbouring part with which they share the longest boundary: the
 children of a segment are connected, and there are two or more of them (the four legs of a table
@@ -266,7 +266,7 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
     std::vector<std::size_t> examined;
     for(std::size_t s : active) {
       if(level >= max_depth) segments[s].status = Segment_status::DEPTH_LIMIT;
-      else if(segments[s].area < 0.01 * total_area || segments[s].number_of_faces < 4)
+      else if(segments[s].area < 0.02 * total_area || segments[s].number_of_faces < 4)
         segments[s].status = Segment_status::TOO_SMALL;
       else examined.push_back(s);
     }
@@ -284,7 +284,7 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
         for(std::size_t s : some) segments[s].status = Segment_status::COUNT_LIMIT;
         continue;
       }
-      const std::vector<internal::Split> splits = internal::split_segments(mesh, faces_of, some, settings, lambda);
+      const std::vector<internal::Split> splits = internal::split_segments(mesh, faces_of, some, settings, lambda, total_area);
       for(std::size_t k = 0; k < some.size(); ++k) {
         const std::size_t s = some[k];
         const internal::Split& split = splits[k];
@@ -293,7 +293,10 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
         segments[s].reflected_fractions = split.reflected_fractions;
         if(verbose)
           std::cerr << "segment " << s << " (level " << level << ", " << segments[s].number_of_faces << " faces): "
-                    << split.planes.size() << " planes, " << split.parts.size() << " parts, " << split.seconds << " s\n";
+                    << split.planes.size() << " planes, " << split.parts.size() << " parts, " << split.seconds
+                    << " s (detection " << split.detection_seconds << " s, features " << split.feature_seconds
+                    << " s, clustering and graph cut " << split.seconds - split.detection_seconds - split.feature_seconds
+                    << " s)\n";
         if(split.parts.size() < 2) {
           segments[s].status = !split.partial_symmetry ? Segment_status::NO_PARTIAL_SYMMETRY : Segment_status::NOT_SEPARABLE;
           continue;

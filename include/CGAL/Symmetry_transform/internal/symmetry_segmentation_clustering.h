@@ -14,6 +14,7 @@
 #include <CGAL/Symmetry_transform/internal/symmetry_segmentation_dual_graph.h>
 
 #include <CGAL/Random.h>
+#include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
 #include <CGAL/boost/graph/alpha_expansion_graphcut.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -183,7 +184,7 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
     CGAL::alpha_expansion_graphcut(graph, get(&Graph_cut_link::weight, graph), get(&Graph_cut_face::cost, graph),
                                    get(&Graph_cut_face::label, graph),
                                    CGAL::parameters::vertex_index_map(get(boost::vertex_index, graph))
-                                     .implementation_tag(CGAL::Alpha_expansion_boost_compressed_sparse_row_tag()));
+                                     .implementation_tag(CGAL::Alpha_expansion_MaxFlow_tag()));
   std::vector<std::size_t> labels(faces.size());
   for(std::size_t i = 0; i < faces.size(); ++i) labels[i] = graph[i].label;
   return labels;

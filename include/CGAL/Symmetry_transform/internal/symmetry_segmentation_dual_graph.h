@@ -30,14 +30,16 @@ namespace Symmetry_transform {
 namespace internal {
 
 // Katz and Tal weigh convex creases less than concave ones: a part boundary tends to run along
-// a concave crease.
-constexpr double convex_crease_factor = 0.1;
+// a concave crease. Here convex creases do not count at all: the cost of a normalised angular
+// distance makes any crease much cheaper than the smooth surface around it, and the convex edges
+// of a box would become cheap cuts between its faces.
+constexpr double convex_crease_factor = 0.;
 
 struct Dual_edge
 {
   std::size_t first, second; // the two faces
   double length;             // of the mesh edge they share
-  double angular_distance;   // eta (1 - cos alpha), alpha the angle of the normals, eta 1 if concave
+  double angular_distance;   // eta (1 - cos alpha), alpha the angle of the normals, eta 1 if concave, 0 if convex
 };
 
 struct Segmentation_mesh
