@@ -283,7 +283,8 @@ TEST(SymmetricRemeshing, RunsAreDeterministic)
 {
   const Surface_mesh mesh = bumpy_sphere<Surface_mesh>(Vector_3(1, 0, 0));
   const std::vector<Plane_3> planes = {Plane_3(1, 0, 0, 0.01)}; // a plane slightly off: mirrors are approximate
-  for(auto method : {CGAL::Surface_mesh_approximation::HIERARCHICAL, CGAL::Surface_mesh_approximation::RANDOM}) {
+  for(auto method : {CGAL::Surface_mesh_approximation::HIERARCHICAL, CGAL::Surface_mesh_approximation::INCREMENTAL,
+                     CGAL::Surface_mesh_approximation::RANDOM}) {
     const auto np = CGAL::parameters::max_number_of_proxies(25).seeding_method(method).random_seed(7).position_weight(0.2);
     const Soup a = remesh(mesh, planes, np), b = remesh(mesh, planes, np.number_of_threads(1));
     EXPECT_EQ(a.points, b.points);

@@ -110,7 +110,6 @@ public:
   const std::vector<std::size_t>& labels() const { return label_; }
   const std::vector<Proxy>& proxies() const { return proxies_; }
   std::size_t proxy_of(std::size_t label) const { return label / t_; }
-  static std::size_t transform_of(std::size_t label, std::size_t t) { return label % t; }
 
   // The plane of a patch: the proxy's, moved by the patch's transform.
   const Eigen::Vector3d& patch_normal(std::size_t label) const { return tn_[label]; }
