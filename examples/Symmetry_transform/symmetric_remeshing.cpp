@@ -6,9 +6,12 @@
 // are coloured by their symmetry error (dark: symmetric).
 //
 // usage: symmetric_remeshing [mesh.off|.ply|.obj|.stl] [--resolution N] [--planes P]
-//          [--plane a,b,c,d]... [--proxies K] [--alpha A] [--seed S] [--output FILE.ply]
+//          [--plane a,b,c,d]... [--proxies K] [--alpha A] [--strongest 0|1] [--seed S]
+//          [--output FILE.ply]
 //   --resolution: grid resolution of the plane detection (default 64)
 //   --planes: how many detected planes to keep (default 1); --plane gives one instead (repeatable)
+//   --alpha: the position weight of the metric (default 0); --strongest 1: each face reflected
+//   only through its strongest plane (for several local symmetries)
 //   writes FILE.ply (symmetric VSA) and FILE_cgal_vsa.ply (CGAL's VSA, K proxies)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -92,7 +95,7 @@ try {
   std::string filename, output = "symmetric_remeshing.ply";
   std::size_t resolution = 64, planes_kept = 1, proxies = 50, seed = 0;
   double alpha = 0.;
-  bool verbose = false;
+  bool verbose = false, strongest = false;
   std::vector<K::Plane_3> planes;
   for(int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
@@ -107,6 +110,7 @@ try {
     else if(arg == "--alpha") alpha = std::stod(value);
     else if(arg == "--output") output = value;
     else if(arg == "--verbose") verbose = value == "1";
+    else if(arg == "--strongest") strongest = value == "1";
     else throw std::invalid_argument("unknown option: " + arg);
   }
   if(filename.empty()) filename = CGAL::data_file_path("meshes/bull.off");
@@ -163,7 +167,8 @@ try {
     r.name = "symmetric VSA, K = " + std::to_string(proxies);
     const auto start = std::chrono::steady_clock::now();
     ST::symmetric_approximate_triangle_mesh(mesh, planes, CGAL::parameters::max_number_of_proxies(proxies)
-                                                            .position_weight(alpha).random_seed(unsigned(seed)).verbose(verbose)
+                                                            .position_weight(alpha).strongest_plane_only(strongest)
+                                                            .random_seed(unsigned(seed)).verbose(verbose)
                                                             .output_mesh(&r.mesh));
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     measure(r);
