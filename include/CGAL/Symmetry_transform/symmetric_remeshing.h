@@ -168,7 +168,7 @@ With an empty range of planes, this is plain VSA.
   \cgalParamNEnd
   \cgalParamNBegin{strongest_plane_only}
     \cgalParamDescription{whether each face may only be reflected through the plane whose mirror
-                          image of its centroid lies closest to the surface (the thesis's option
+                          image of its centroid lies closest to a face centroid (the thesis's option
                           for several local symmetries, Figure 5.8)}
     \cgalParamType{`bool`}
     \cgalParamDefault{`false`}
