@@ -161,10 +161,12 @@ Mirror_match mirror_match(const Soup& s, const Plane_3& plane, double tolerance)
 }
 
 // Vertices of a triangle soup whose incident triangles do not form one fan (their link is not a
-// single path or cycle), and triangles with repeated or collinear corners, or twice the same corners.
+// single path or cycle), triangles with repeated or collinear corners, or twice the same corners,
+// and directed edges shared by triangles.
 struct Soup_defects
 {
   std::size_t non_manifold_vertices = 0, degenerate = 0, duplicated = 0;
+  std::size_t folded = 0; // directed edges in more than one triangle (triangles folded onto each other)
 };
 
 Soup_defects defects(const Soup& s)
@@ -172,6 +174,9 @@ Soup_defects defects(const Soup& s)
   Soup_defects d;
   std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(s.points.size());
   std::set<Triangle> seen;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> directed;
+  for(const Triangle& t : s.triangles)
+    for(int i = 0; i < 3; ++i) d.folded += directed[{t[i], t[(i + 1) % 3]}]++ == 1 ? 1 : 0;
   for(const Triangle& t : s.triangles) {
     Triangle key = t;
     std::sort(key.begin(), key.end());
@@ -275,6 +280,7 @@ TEST(SymmetricRemeshing, OutputIsValidTriangleMesh)
     const Soup_defects cgal = defects(cgal_vsa(mesh, k));
     EXPECT_EQ(ours.degenerate, 0u) << "K = " << k;
     EXPECT_EQ(ours.duplicated, 0u) << "K = " << k;
+    EXPECT_EQ(ours.folded, 0u) << "K = " << k;
     EXPECT_LE(ours.non_manifold_vertices, cgal.non_manifold_vertices) << "K = " << k;
   }
 }

@@ -16,7 +16,8 @@
 //   next to another anchor);
 // - the triangulation of each patch by multi-source Dijkstra from its anchors (each vertex
 //   takes the tag of its nearest anchor, chord vertices that of the nearer chord end): a face
-//   whose three vertices have three tags gives a triangle;
+//   whose three vertices have three tags gives a triangle; of triangles with the same directed
+//   edge (folded onto each other), one is kept;
 // - anchor positions: the mean of their projections onto the planes of their patches;
 // - anchors matched across each plane (same proxies around, mutually nearest mirror images)
 //   and moved to exact mirror positions, vertices matched to themselves onto the plane.
@@ -343,6 +344,49 @@ private:
       std::sort(key.begin(), key.end());
       if(seen.insert(key).second) out_.triangles.push_back({i, j, k});
     }
+    remove_folded_triangles();
+  }
+
+  // Two triangles with the same directed edge overlap (one folds onto the other), and make the
+  // edge and its ends non-manifold: of each such set, only the triangle that leaves fewest edges
+  // without a second triangle is kept.
+  void remove_folded_triangles()
+  {
+    auto& t = out_.triangles;
+    typedef std::pair<std::size_t, std::size_t> Edge;
+    std::map<Edge, std::vector<std::size_t>> directed;
+    std::map<Edge, std::size_t> count;
+    auto undirected = [](std::size_t a, std::size_t b) { return Edge((std::min)(a, b), (std::max)(a, b)); };
+    for(std::size_t i = 0; i < t.size(); ++i)
+      for(int c = 0; c < 3; ++c) {
+        directed[Edge(t[i][c], t[i][(c + 1) % 3])].push_back(i);
+        ++count[undirected(t[i][c], t[i][(c + 1) % 3])];
+      }
+    std::vector<char> removed(t.size(), 0);
+    // The edges of triangle i that would be left with one triangle without it.
+    auto opened = [&](std::size_t i) {
+      int n = 0;
+      for(int c = 0; c < 3; ++c) n += count[undirected(t[i][c], t[i][(c + 1) % 3])] == 2 ? 1 : 0;
+      return n;
+    };
+    for(const auto& [edge, list] : directed) {
+      std::vector<std::size_t> alive;
+      for(std::size_t i : list)
+        if(!removed[i]) alive.push_back(i);
+      while(alive.size() > 1) {
+        std::size_t worst = 0;
+        for(std::size_t a = 1; a < alive.size(); ++a)
+          if(opened(alive[a]) <= opened(alive[worst])) worst = a;
+        const std::size_t i = alive[worst];
+        removed[i] = 1;
+        for(int c = 0; c < 3; ++c) --count[undirected(t[i][c], t[i][(c + 1) % 3])];
+        alive.erase(alive.begin() + std::ptrdiff_t(worst));
+      }
+    }
+    std::vector<std::array<std::size_t, 3>> kept;
+    for(std::size_t i = 0; i < t.size(); ++i)
+      if(!removed[i]) kept.push_back(t[i]);
+    t.swap(kept);
   }
 
   void place_anchors(bool optimize)
