@@ -40,7 +40,7 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace ST = CGAL::Symmetry_transform;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-const char* default_meshes = "bull.off,cow.off,dino.off,elephant.off,camel.off,armadillo.off";
+const char* default_meshes = "bull.off,cow.off,dino.off,elephant.off,camel.off,homer.off";
 
 std::vector<std::string> split(const std::string& list)
 {

@@ -259,6 +259,8 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
     for(auto& component : internal::connected_parts(mesh, all, identity, region)) add_segment(std::move(component), Segment::none);
   }
 
+  double root_radius = 0.; // of the largest component
+  for(std::size_t s = 0; s < segments.size(); ++s) root_radius = (std::max)(root_radius, internal::radius_of(mesh, faces_of[s]));
   std::size_t leaves = segments.size();
   std::vector<std::size_t> active(segments.size());
   std::iota(active.begin(), active.end(), std::size_t(0));
@@ -284,7 +286,7 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
         for(std::size_t s : some) segments[s].status = Segment_status::COUNT_LIMIT;
         continue;
       }
-      const std::vector<internal::Split> splits = internal::split_segments(mesh, faces_of, some, settings, lambda, total_area);
+      const std::vector<internal::Split> splits = internal::split_segments(mesh, faces_of, some, settings, lambda, total_area, root_radius);
       for(std::size_t k = 0; k < some.size(); ++k) {
         const std::size_t s = some[k];
         const internal::Split& split = splits[k];

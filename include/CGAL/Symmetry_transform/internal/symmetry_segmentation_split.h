@@ -83,13 +83,27 @@ Segmentation_settings segmentation_settings(const NamedParameters& np)
 // mesh's, at least this many.
 constexpr std::size_t least_refinement_samples = 1000;
 
+// The smallest grid of a segment below the root, if the root's is larger.
+constexpr long least_segment_resolution = 24;
+
+// The grid resolution of a segment of radius `radius` in a mesh whose largest component has the
+// radius `root_radius`: the voxels keep their size, down to least_segment_resolution (or 12
+// Gaussian widths, the smallest grid allowed), an even number.
+inline long segment_resolution(const Segmentation_settings& s, double radius, double root_radius)
+{
+  // even, as the transform requires
+  const long least = (std::min)(s.grid_resolution, (std::max)(least_segment_resolution, 2 * (long(6. * s.gaussian_width) + 1)));
+  const long scaled = 2 * long(std::lround(0.5 * double(s.grid_resolution) * radius / root_radius));
+  return (std::max)(least, (std::min)(s.grid_resolution, scaled));
+}
+
 // The named parameters of the detection on a segment's sub-mesh.
-inline auto detection_parameters(const Segmentation_settings& s, double fraction, unsigned threads)
+inline auto detection_parameters(const Segmentation_settings& s, double fraction, long resolution, unsigned threads)
 {
   const std::size_t samples = (std::max)(
     (std::min)(least_refinement_samples, s.number_of_refinement_samples),
     std::size_t(std::lround(fraction * double(s.number_of_refinement_samples))));
-  return CGAL::parameters::grid_resolution(s.grid_resolution)
+  return CGAL::parameters::grid_resolution(resolution)
     .gaussian_width(s.gaussian_width)
     .number_of_samples(s.number_of_samples)
     .number_of_refinement_samples(samples)
@@ -101,6 +115,23 @@ inline auto detection_parameters(const Segmentation_settings& s, double fraction
     .monte_carlo_estimator(s.estimator)
     .random_seed(s.seed)
     .number_of_threads(threads);
+}
+
+// The largest distance from the area-weighted centroid of the faces to their vertices.
+inline double radius_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
+{
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double area = 0.;
+  for(std::size_t f : faces) {
+    const auto& t = mesh.triangles[f];
+    center += mesh.areas[f] * (t[0] + t[1] + t[2]) / 3.;
+    area += mesh.areas[f];
+  }
+  if(area > 0.) center /= area;
+  double r2 = 0.;
+  for(std::size_t f : faces)
+    for(const Eigen::Vector3d& p : mesh.triangles[f]) r2 = (std::max)(r2, (p - center).squaredNorm());
+  return std::sqrt(r2);
 }
 
 struct Split
@@ -115,12 +146,12 @@ struct Split
 
 // The split of the segment made of `faces` (connected, sorted).
 inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces, double fraction,
-                           const Segmentation_settings& settings, double lambda, unsigned threads)
+                           long resolution, const Segmentation_settings& settings, double lambda, unsigned threads)
 {
   const auto start = std::chrono::steady_clock::now();
   Split split;
   const Soup_mesh soup = soup_of(mesh, faces);
-  const auto np = detection_parameters(settings, fraction, threads);
+  const auto np = detection_parameters(settings, fraction, resolution, threads);
   split.planes = detect_principal_symmetries(soup, np);
   auto since_start = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   split.detection_seconds = since_start();
@@ -133,7 +164,7 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
   // (a face is mirrored or it is not) cluster more cleanly. Values are divided by the mean value
   // at the unreflected points (the surface itself), so that a perfectly mirrored face gets 1.
   const Voxel_grid<Dkernel> gedt = gaussian_distance_transform(
-    soup, CGAL::parameters::grid_resolution(feature_resolution_factor * settings.grid_resolution)
+    soup, CGAL::parameters::grid_resolution(feature_resolution_factor * resolution)
             .gaussian_width(settings.gaussian_width)
             .number_of_threads(threads));
   std::vector<double> weights(faces.size());
@@ -186,7 +217,8 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
 inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
                                          const std::vector<std::vector<std::size_t>>& faces_of,
                                          const std::vector<std::size_t>& examined,
-                                         const Segmentation_settings& settings, double lambda, double total_area)
+                                         const Segmentation_settings& settings, double lambda, double total_area,
+                                         double root_radius)
 {
   std::vector<Split> splits(examined.size());
   if(examined.empty()) return splits;
@@ -198,7 +230,8 @@ inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
     {
       double area = 0.;
       for(std::size_t f : faces_of[examined[k]]) area += mesh.areas[f];
-      splits[k] = split_segment(mesh, faces_of[examined[k]], area / total_area, settings, lambda, inner);
+      const long resolution = segment_resolution(settings, radius_of(mesh, faces_of[examined[k]]), root_radius);
+      splits[k] = split_segment(mesh, faces_of[examined[k]], area / total_area, resolution, settings, lambda, inner);
     }
   });
   return splits;
