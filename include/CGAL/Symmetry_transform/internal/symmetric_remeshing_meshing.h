@@ -17,7 +17,7 @@
 // - the triangulation of each patch by multi-source Dijkstra from its anchors (each vertex
 //   takes the tag of its nearest anchor, chord vertices that of the nearer chord end): a face
 //   whose three vertices have three tags gives a triangle; of triangles with the same directed
-//   edge (folded onto each other), one is kept;
+//   edge (folded onto each other), the largest is kept;
 // - anchor positions: the mean of their projections onto the planes of their patches;
 // - anchors matched across each plane (same proxies around, mutually nearest mirror images)
 //   and moved to exact mirror positions, vertices matched to themselves onto the plane.
@@ -347,41 +347,29 @@ private:
     remove_folded_triangles();
   }
 
-  // Two triangles with the same directed edge overlap (one folds onto the other), and make the
-  // edge and its ends non-manifold: of each such set, only the triangle that leaves fewest edges
-  // without a second triangle is kept.
+  // Two triangles with the same directed edge overlap (one folds onto the other) and make the
+  // edge and its ends non-manifold: of each such set, only the largest triangle (area between the
+  // anchors' mesh vertices) is kept. The folds are slivers; removing the smaller ones keeps the
+  // surface covered best.
   void remove_folded_triangles()
   {
     auto& t = out_.triangles;
     typedef std::pair<std::size_t, std::size_t> Edge;
     std::map<Edge, std::vector<std::size_t>> directed;
-    std::map<Edge, std::size_t> count;
-    auto undirected = [](std::size_t a, std::size_t b) { return Edge((std::min)(a, b), (std::max)(a, b)); };
     for(std::size_t i = 0; i < t.size(); ++i)
-      for(int c = 0; c < 3; ++c) {
-        directed[Edge(t[i][c], t[i][(c + 1) % 3])].push_back(i);
-        ++count[undirected(t[i][c], t[i][(c + 1) % 3])];
-      }
-    std::vector<char> removed(t.size(), 0);
-    // The edges of triangle i that would be left with one triangle without it.
-    auto opened = [&](std::size_t i) {
-      int n = 0;
-      for(int c = 0; c < 3; ++c) n += count[undirected(t[i][c], t[i][(c + 1) % 3])] == 2 ? 1 : 0;
-      return n;
+      for(int c = 0; c < 3; ++c) directed[Edge(t[i][c], t[i][(c + 1) % 3])].push_back(i);
+    auto area = [&](std::size_t i) {
+      const Eigen::Vector3d &a = m_.points[out_.anchor_vertices[t[i][0]]], &b = m_.points[out_.anchor_vertices[t[i][1]]],
+                            &c = m_.points[out_.anchor_vertices[t[i][2]]];
+      return (b - a).cross(c - a).norm();
     };
-    for(const auto& [edge, list] : directed) {
-      std::vector<std::size_t> alive;
-      for(std::size_t i : list)
-        if(!removed[i]) alive.push_back(i);
-      while(alive.size() > 1) {
-        std::size_t worst = 0;
-        for(std::size_t a = 1; a < alive.size(); ++a)
-          if(opened(alive[a]) <= opened(alive[worst])) worst = a;
-        const std::size_t i = alive[worst];
-        removed[i] = 1;
-        for(int c = 0; c < 3; ++c) --count[undirected(t[i][c], t[i][(c + 1) % 3])];
-        alive.erase(alive.begin() + std::ptrdiff_t(worst));
-      }
+    std::vector<char> removed(t.size(), 0);
+    for(const auto& entry : directed) {
+      std::size_t largest = Remeshing_mesh::none;
+      for(std::size_t i : entry.second)
+        if(!removed[i] && (largest == Remeshing_mesh::none || area(i) > area(largest))) largest = i;
+      for(std::size_t i : entry.second)
+        if(i != largest) removed[i] = 1;
     }
     std::vector<std::array<std::size_t, 3>> kept;
     for(std::size_t i = 0; i < t.size(); ++i)
