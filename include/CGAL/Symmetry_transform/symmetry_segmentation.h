@@ -89,7 +89,8 @@ struct Segmentation_tree
   /// All the segments, parents before their children.
   std::vector<Segment> segments;
 
-  /// The indices of the roots.
+  /// The roots of the tree, one per connected component of the mesh.
+  /// \returns the indices of the roots in `segments`
   std::vector<std::size_t> roots() const
   {
     std::vector<std::size_t> result;
@@ -98,7 +99,9 @@ struct Segmentation_tree
     return result;
   }
 
-  /// The index of the leaf whose faces got the segment id `id`.
+  /// The leaf of a segment of the result.
+  /// \param id a segment id written by `segment_by_symmetry()`
+  /// \returns the index in `segments` of the leaf whose faces got the id `id`, `Segment::none` if there is none
   std::size_t leaf(std::size_t id) const
   {
     for(std::size_t i = 0; i < segments.size(); ++i)
