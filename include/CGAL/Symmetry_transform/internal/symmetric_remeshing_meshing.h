@@ -148,6 +148,17 @@ private:
     return g;
   }
 
+  // The boundary halfedges from h (excluded) to the next anchor; h is moved there.
+  std::vector<std::size_t> walk_chord(std::size_t& h) const
+  {
+    std::vector<std::size_t> chord;
+    do {
+      h = next_boundary(h);
+      chord.push_back(h);
+    } while(anchor_[m_.target(h)] == none);
+    return chord;
+  }
+
   // Subdivides chord[begin, end) at its farthest vertex while the criterion holds (CGAL's rule).
   void subdivide(const std::vector<std::size_t>& chord, std::size_t begin, std::size_t end, const Meshing_settings& s)
   {
@@ -197,11 +208,7 @@ private:
       cycles_.push_back(head);
       std::size_t h = head;
       do {
-        std::vector<std::size_t> chord;
-        do {
-          h = next_boundary(h);
-          chord.push_back(h);
-        } while(anchor_[m_.target(h)] == none);
+        const std::vector<std::size_t> chord = walk_chord(h);
         subdivide(chord, 0, chord.size(), s);
         for(std::size_t c : chord) candidate[c] = 0;
       } while(h != head);
@@ -324,11 +331,7 @@ private:
     for(std::size_t head : cycles_) {
       std::size_t h = head;
       do {
-        std::vector<std::size_t> chord;
-        do {
-          h = next_boundary(h);
-          chord.push_back(h);
-        } while(anchor_[m_.target(h)] == none);
+        const std::vector<std::size_t> chord = walk_chord(h);
         std::vector<double> along(1, 0.);
         for(std::size_t c : chord) along.push_back(along.back() + (m_.points[m_.target(c)] - m_.points[m_.source(c)]).norm());
         const std::size_t left = anchor_[m_.source(chord.front())], right = anchor_[m_.target(chord.back())];
