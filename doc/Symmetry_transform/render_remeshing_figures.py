@@ -21,7 +21,7 @@ diagonal or more; the thesis's Figure 5.6), edges drawn, the plane's trace on th
 red. MESH names files of DIR/data/meshes without ".off" (default: cow bull).
 
 Re-running it overwrites the figures. Debian packages: as for render_figures.py (whose helpers
-it reuses), python3-vtk9, xvfb and xauth; without a DISPLAY it runs itself under xvfb-run.
+it reuses, with those of render_application_figures.py), python3-vtk9, xvfb and xauth; without a DISPLAY it runs itself under xvfb-run.
 """
 
 import argparse
@@ -31,7 +31,8 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import render_figures as rf  # noqa: E402  (its helpers: run, ply_comments, text, rectangle, VIEWS, ...)
+import render_figures as rf  # noqa: E402  (its helpers: run, build_example, text, rectangle, VIEWS, ...)
+import render_application_figures as raf  # noqa: E402  (its helper save)
 
 ROOT, FIG_DIR = rf.ROOT, rf.FIG_DIR
 
@@ -183,18 +184,7 @@ def render_figure(mesh_name, panels, plane, png):
                 camera.Zoom(view.get("zoom", 1.15))
                 first = False
     window.AddRenderer(legend_renderer(width, height, mesh_name))
-    window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetCompressionLevel(9)
-    writer.SetFileName(png)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    print("wrote %s (%d KB)" % (png, (os.path.getsize(png) + 1023) // 1024), flush=True)
+    raf.save(window, png)
 
 
 def main():
@@ -228,5 +218,5 @@ def main():
 
 
 if __name__ == "__main__":
-    vtk = rf.vtk_with_display(__file__)
+    vtk = raf.vtk = rf.vtk_with_display(__file__)
     main()
