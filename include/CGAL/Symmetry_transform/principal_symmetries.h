@@ -8,6 +8,7 @@
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/grid_settings.h>
 #include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/refinement_samples.h>
 #include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/principal_symmetries_impl.h>
@@ -68,50 +69,6 @@ Isp_settings isp_settings(const NamedParameters& np, const Voxel_grid<GT>& gedt)
   settings.threads = grid.threads;
   settings.beyond_band = [&gedt](const Eigen::Vector3d& p) { return gedt.trilinear_value(p.x(), p.y(), p.z()) == 0.; };
   return settings;
-}
-
-template <typename NamedParameters>
-std::size_t number_of_refinement_samples(const NamedParameters& np)
-{
-  const std::size_t samples = std::size_t(parameters::choose_parameter(
-    parameters::get_parameter(np, internal_np::st_number_of_refinement_samples), 10000));
-  if(samples == 0) throw std::invalid_argument("Symmetry_transform: number_of_refinement_samples must be positive");
-  return samples;
-}
-
-// Area-uniform random samples of the triangles, from the seed alone. (CGAL 5.5's
-// Random_points_in_triangles_3 picks the triangle with the given generator, but the point in
-// it with CGAL::get_default_random(): runs would differ.)
-template <typename NamedParameters>
-std::vector<Eigen::Vector3d> surface_samples(const std::vector<Dtriangle>& triangles, const NamedParameters& np)
-{
-  CGAL::Random random(unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u)));
-  std::vector<double> cumulative_area;
-  double total = 0.;
-  for(const Dtriangle& t : triangles) cumulative_area.push_back(total += std::sqrt(t.squared_area()));
-  std::vector<Dpoint> samples;
-  for(std::size_t i = number_of_refinement_samples(np); i > 0; --i) {
-    const std::size_t f = std::size_t(std::upper_bound(cumulative_area.begin(), cumulative_area.end() - 1,
-                                                       random.get_double(0., total)) - cumulative_area.begin());
-    double u = random.get_double(), v = random.get_double();
-    if(u + v > 1.) { u = 1. - u; v = 1. - v; } // fold the parallelogram onto the triangle
-    const Dtriangle& t = triangles[f];
-    samples.push_back(t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]));
-  }
-  return isp_order(std::move(samples));
-}
-
-// A seeded random subset of the points.
-template <typename NamedParameters>
-std::vector<Eigen::Vector3d> point_samples(const std::vector<Dpoint>& points, const NamedParameters& np)
-{
-  const unsigned seed = unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u));
-  std::vector<Dpoint> chosen = points;
-  CGAL::Random random(seed);
-  const std::size_t count = (std::min)(points.size(), number_of_refinement_samples(np));
-  for(std::size_t i = 0; i < count; ++i) std::swap(chosen[i], chosen[i + std::size_t(random.get_int(0, int(chosen.size() - i)))]);
-  chosen.resize(count);
-  return isp_order(std::move(chosen));
 }
 
 // The PRST of a detection. Its maxima need only be located to a bin or two, ISP doing the

@@ -12,8 +12,8 @@
 #include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/refinement_samples.h>
 #include <CGAL/Symmetry_transform/internal/shape_input.h>
-#include <CGAL/Symmetry_transform/principal_symmetries.h>
 
 #include <algorithm>
 #include <cmath>

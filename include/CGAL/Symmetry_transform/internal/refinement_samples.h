@@ -1,0 +1,78 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFINEMENT_SAMPLES_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFINEMENT_SAMPLES_H
+
+// The samples that Iterative Symmetric Points reflects (and that the remeshing metrics measure
+// distances from): area-uniform on a mesh, a random subset of a point set, from the seed alone.
+
+#include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/shape_input.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Random.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Symmetry_transform {
+namespace internal {
+
+template <typename NamedParameters>
+std::size_t number_of_refinement_samples(const NamedParameters& np)
+{
+  const std::size_t samples = std::size_t(parameters::choose_parameter(
+    parameters::get_parameter(np, internal_np::st_number_of_refinement_samples), 10000));
+  if(samples == 0) throw std::invalid_argument("Symmetry_transform: number_of_refinement_samples must be positive");
+  return samples;
+}
+
+// Area-uniform random samples of the triangles, from the seed alone. (CGAL 5.5's
+// Random_points_in_triangles_3 picks the triangle with the given generator, but the point in
+// it with CGAL::get_default_random(): runs would differ.)
+template <typename NamedParameters>
+std::vector<Eigen::Vector3d> surface_samples(const std::vector<Dtriangle>& triangles, const NamedParameters& np)
+{
+  CGAL::Random random(unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u)));
+  std::vector<double> cumulative_area;
+  double total = 0.;
+  for(const Dtriangle& t : triangles) cumulative_area.push_back(total += std::sqrt(t.squared_area()));
+  std::vector<Dpoint> samples;
+  for(std::size_t i = number_of_refinement_samples(np); i > 0; --i) {
+    const std::size_t f = std::size_t(std::upper_bound(cumulative_area.begin(), cumulative_area.end() - 1,
+                                                       random.get_double(0., total)) - cumulative_area.begin());
+    double u = random.get_double(), v = random.get_double();
+    if(u + v > 1.) { u = 1. - u; v = 1. - v; } // fold the parallelogram onto the triangle
+    const Dtriangle& t = triangles[f];
+    samples.push_back(t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]));
+  }
+  return isp_order(std::move(samples));
+}
+
+// A seeded random subset of the points.
+template <typename NamedParameters>
+std::vector<Eigen::Vector3d> point_samples(const std::vector<Dpoint>& points, const NamedParameters& np)
+{
+  const unsigned seed = unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u));
+  std::vector<Dpoint> chosen = points;
+  CGAL::Random random(seed);
+  const std::size_t count = (std::min)(points.size(), number_of_refinement_samples(np));
+  for(std::size_t i = 0; i < count; ++i) std::swap(chosen[i], chosen[i + std::size_t(random.get_int(0, int(chosen.size() - i)))]);
+  chosen.resize(count);
+  return isp_order(std::move(chosen));
+}
+
+} // namespace internal
+} // namespace Symmetry_transform
+} // namespace CGAL
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFINEMENT_SAMPLES_H
