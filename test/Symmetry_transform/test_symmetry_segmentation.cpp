@@ -35,6 +35,7 @@
 #include <iostream>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -349,18 +350,25 @@ void expect_valid(const Surface_mesh& mesh, const Result& r)
 // Tests
 // ------------------------------------------------------------------------------------------
 
-// Thesis, Figure 5.9: the box's planes reflect the box and not the ellipsoid, the ellipsoid's
-// the converse; one split separates them.
-TEST(SymmetrySegmentation, SplitsBoxBesideEllipsoidIntoItsParts)
+// `r`, a segmentation of `s`, is valid and has one segment per part of `s`, with at least 95 % of
+// the area in the segment of its part (best one-to-one matching).
+void expect_split_into_parts(const Composite& s, const std::string& name, const Result& r)
 {
-  const Composite s = box_beside_ellipsoid();
-  const Result r = segmentation(s.mesh, grid_64.max_segmentation_depth(1));
-  std::cout << "box beside ellipsoid (" << num_faces(s.mesh) << " faces): " << r.count << " segments\n" << describe(r);
+  std::cout << name << " (" << num_faces(s.mesh) << " faces): " << r.count << " segments\n" << describe(r);
   expect_valid(s.mesh, r);
-  ASSERT_EQ(r.count, 2u) << describe(r);
+  ASSERT_EQ(r.count, s.parts.size()) << describe(r);
   const double fraction = best_matching_fraction(r.segment, r.count, true_parts(s), s.parts.size(), face_areas(s.mesh));
   std::cout << "  area labelled correctly: " << 100. * fraction << " %\n";
   EXPECT_GE(fraction, 0.95);
+}
+
+// Thesis, Figure 5.9: the box's planes reflect the box and not the ellipsoid, the ellipsoid's
+// the converse; one split separates them. (At 32^3 the Gaussian, a tenth of the composite's
+// radius, is too wide for the local planes of the parts to be detected.)
+TEST(SymmetrySegmentation, SplitsBoxBesideEllipsoidIntoItsParts)
+{
+  const Composite s = box_beside_ellipsoid();
+  expect_split_into_parts(s, "box beside ellipsoid", segmentation(s.mesh, grid_64.max_segmentation_depth(1)));
 }
 
 // The slab's mid-plane reflects the slab and none of the legs: the slab and the four legs
@@ -368,13 +376,7 @@ TEST(SymmetrySegmentation, SplitsBoxBesideEllipsoidIntoItsParts)
 TEST(SymmetrySegmentation, SplitsTableIntoSlabAndFourLegs)
 {
   const Composite s = table();
-  const Result r = segmentation(s.mesh, grid_32.max_segmentation_depth(1));
-  std::cout << "table (" << num_faces(s.mesh) << " faces): " << r.count << " segments\n" << describe(r);
-  expect_valid(s.mesh, r);
-  ASSERT_EQ(r.count, 5u) << describe(r);
-  const double fraction = best_matching_fraction(r.segment, r.count, true_parts(s), s.parts.size(), face_areas(s.mesh));
-  std::cout << "  area labelled correctly: " << 100. * fraction << " %\n";
-  EXPECT_GE(fraction, 0.95);
+  expect_split_into_parts(s, "table", segmentation(s.mesh, grid_32.max_segmentation_depth(1)));
 }
 
 // Deeper levels do not undo the parts: with the default depth, every segment still lies
@@ -407,17 +409,12 @@ TEST(SymmetrySegmentation, SymmetricShapeGetsMirrorConsistentSegments)
 {
   const Composite s = ellipsoid_on_box();
   const Result r = segmentation(s.mesh, grid_64.max_segmentation_depth(1));
-  std::cout << "ellipsoid on box (" << num_faces(s.mesh) << " faces): " << r.count << " segments\n" << describe(r);
-  expect_valid(s.mesh, r);
-  ASSERT_EQ(r.count, 2u) << describe(r);
+  expect_split_into_parts(s, "ellipsoid on box", r);
   for(const Plane_3& plane : {Plane_3(1, 0, 0, 0), Plane_3(0, 1, 0, 0)}) {
     const double fraction = mirror_consistency(s.mesh, r.segment, plane);
     std::cout << "  mirror-consistent area through " << plane << ": " << 100. * fraction << " %\n";
     EXPECT_GE(fraction, 0.95);
   }
-  const double fraction = best_matching_fraction(r.segment, r.count, true_parts(s), 2, face_areas(s.mesh));
-  std::cout << "  area labelled correctly: " << 100. * fraction << " %\n";
-  EXPECT_GE(fraction, 0.95);
 }
 
 // max_number_of_segments caps the count (the split of the table into five parts merges legs into
