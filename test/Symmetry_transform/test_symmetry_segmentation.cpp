@@ -372,7 +372,9 @@ TEST(SymmetrySegmentation, SplitsBoxBesideEllipsoidIntoItsParts)
 }
 
 // The slab's mid-plane reflects the slab and none of the legs: the slab and the four legs
-// (four connected parts of the second cluster) come out at depth 1.
+// (four connected parts of the second cluster) come out at depth 1. Measured (2026-11-22): 97.4 %
+// with seed 1; with seeds 2 and 3, 94.6 % and 96.0 %, a patch of the slab's underside around each
+// leg going with the leg: the margin is thin.
 TEST(SymmetrySegmentation, SplitsTableIntoSlabAndFourLegs)
 {
   const Composite s = table();
