@@ -19,7 +19,8 @@ SDF segmentation, faces coloured by segment as the example writes them. MESH nam
 DIR/data/meshes without ".off" (default: bull camel).
 
 Re-running it overwrites the figures. Debian packages: as for render_figures.py (whose helpers
-it reuses, with the PLY reader of render_remeshing_figures.py), python3-vtk9, xvfb and xauth;
+it reuses, with the PLY reader of render_remeshing_figures.py and the PNG writer of
+render_application_figures.py), python3-vtk9, xvfb and xauth;
 without a DISPLAY it runs itself under xvfb-run.
 """
 
@@ -31,6 +32,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import render_figures as rf  # noqa: E402  (its helpers: run, text, rectangle, VIEWS, vtk_with_display, ...)
+import render_application_figures as raf  # noqa: E402  (save: the window as a PNG file)
 import render_remeshing_figures as rrf  # noqa: E402  (its PLY reader, load)
 
 ROOT, FIG_DIR = rf.ROOT, rf.FIG_DIR
@@ -107,18 +109,7 @@ def render_figure(mesh_name, panels, png):
     legend.SetViewport(0, 0, 1, LEGEND_H / height)
     legend.AddActor2D(rf.text(mesh_name + ".off: faces coloured by segment", 16, 10, 12))
     window.AddRenderer(legend)
-    window.Render()
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetCompressionLevel(9)
-    writer.SetFileName(png)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-    print("wrote %s (%d KB)" % (png, (os.path.getsize(png) + 1023) // 1024), flush=True)
+    raf.save(window, png)
 
 
 def main():
@@ -153,5 +144,5 @@ def main():
 
 if __name__ == "__main__":
     vtk = rf.vtk_with_display(__file__)
-    rrf.vtk = vtk  # the module's reader uses its own global
+    rrf.vtk = raf.vtk = vtk  # the modules' helpers use their own global
     main()
