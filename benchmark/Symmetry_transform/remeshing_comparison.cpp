@@ -14,7 +14,9 @@
 // - symmetry error: RMS distance from the mirror images of output samples to the output, over
 //   the region where the input is symmetric (the mirror images within 2% of the diagonal of
 //   the input; symmetry_error with a reference mesh); the whole-surface value is printed too,
-// both in units of 1e-3 of the bounding-box diagonal.
+// both in units of 1e-3 of the bounding-box diagonal;
+// - validity: border edges (an edge of one triangle only) and non-manifold vertices (whose
+//   triangles are not one fan), per case on stderr and in all at the end.
 //
 // usage: remeshing_comparison [--meshes a.off,b.off,...] [--proxies 50,100,200] [--planes P]
 //          [--resolution N] [--alpha A] [--repeats R]
@@ -40,6 +42,8 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -76,6 +80,46 @@ Mesh mesh_of(Soup s)
   if(!PMP::is_polygon_soup_a_polygon_mesh(s.triangles)) PMP::orient_polygon_soup(s.points, s.triangles);
   PMP::polygon_soup_to_polygon_mesh(s.points, s.triangles, out);
   return out;
+}
+
+// Output soup defects: border edges (an undirected edge in one triangle only) and vertices
+// whose incident triangles are not one fan (their link is not a single path or cycle).
+struct Defects
+{
+  std::size_t border_edges = 0, non_manifold_vertices = 0;
+};
+
+Defects defects(const Soup& s)
+{
+  Defects d;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> edges;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(s.points.size());
+  for(const auto& t : s.triangles)
+    for(int i = 0; i < 3; ++i) {
+      ++edges[std::minmax(t[i], t[(i + 1) % 3])];
+      link[t[i]].push_back({t[(i + 1) % 3], t[(i + 2) % 3]});
+    }
+  for(const auto& e : edges) d.border_edges += e.second == 1 ? 1 : 0;
+  for(const auto& l : link) {
+    if(l.empty()) continue;
+    std::map<std::size_t, std::vector<std::size_t>> adjacent;
+    for(const auto& [a, b] : l) {
+      adjacent[a].push_back(b);
+      adjacent[b].push_back(a);
+    }
+    bool bad = false;
+    for(const auto& a : adjacent) bad = bad || a.second.size() > 2;
+    std::set<std::size_t> reached = {adjacent.begin()->first};
+    std::vector<std::size_t> stack = {adjacent.begin()->first};
+    while(!stack.empty()) {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      for(std::size_t w : adjacent[v])
+        if(reached.insert(w).second) stack.push_back(w);
+    }
+    if(bad || reached.size() != adjacent.size()) ++d.non_manifold_vertices;
+  }
+  return d;
 }
 
 struct Run
@@ -117,6 +161,7 @@ try {
             << "| mesh | faces | K | method | vertices | RMS error | symmetry error | time (s) |\n"
             << "|---|---:|---:|---|---:|---:|---:|---:|\n"
             << std::fixed;
+  std::size_t border[3] = {0, 0, 0}, non_manifold[3] = {0, 0, 0};
   std::vector<double> ratios, geometric_k, geometric_2k, symmetry_k, symmetry_2k;
   for(const std::string& name : meshes) {
     const std::string path = name.find('/') == std::string::npos ? std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name : name;
@@ -162,6 +207,11 @@ try {
         symmetry[m] = ST::symmetry_error(out, planes.front(), mesh, 0.02 * diagonal, metric_np) / diagonal;
         const double whole = ST::symmetry_error(out, planes.front(), metric_np) / diagonal;
         const char* method[3] = {"symmetric VSA, K", "CGAL VSA, K", "CGAL VSA, 2K"};
+        const Defects d = defects(runs[m].soup);
+        border[m] += d.border_edges;
+        non_manifold[m] += d.non_manifold_vertices;
+        std::cerr << name << " K = " << k << ", " << method[m] << ": " << d.border_edges << " border edges, "
+                  << d.non_manifold_vertices << " non-manifold vertices\n";
         std::cout << "| | | " << k << " | " << method[m] << " | " << runs[m].soup.points.size() << " | "
                   << std::setprecision(2) << 1e3 * geometric[m] << " | " << 1e3 * symmetry[m] << " (" << 1e3 * whole
                   << ") | " << std::setprecision(3) << median(runs[m].seconds) << " |\n";
@@ -183,7 +233,10 @@ try {
             << "  time ratio to CGAL K:        mean " << mean(ratios) << ", largest "
             << (ratios.empty() ? 0. : *std::max_element(ratios.begin(), ratios.end())) << "\n"
             << "  geometric error ratio:       " << mean(geometric_k) << " (to K), " << mean(geometric_2k) << " (to 2K)\n"
-            << "  symmetry error ratio:        " << mean(symmetry_k) << " (to K), " << mean(symmetry_2k) << " (to 2K)\n";
+            << "  symmetry error ratio:        " << mean(symmetry_k) << " (to K), " << mean(symmetry_2k) << " (to 2K)\n"
+            << "  border edges in all:         " << border[0] << " (CGAL K: " << border[1] << ", 2K: " << border[2] << ")\n"
+            << "  non-manifold vertices:       " << non_manifold[0] << " (CGAL K: " << non_manifold[1] << ", 2K: "
+            << non_manifold[2] << ")\n";
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {

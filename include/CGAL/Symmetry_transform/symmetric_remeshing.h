@@ -121,8 +121,10 @@ area-weighted form of the thesis's combined metric, the \f$ L^{2,1} \f$ metric o
 
 The output mesh is extracted as in CGAL's VSA (anchors where three patches meet, boundary chords
 subdivided, a Dijkstra flooding of each patch from its anchors giving the triangles; of the
-triangles folded onto each other, sharing a directed edge, only the largest is kept), with
-patches as regions, and symmetry enforced: vertices on a plane where a patch boundary crosses it
+triangles folded onto each other, sharing a directed edge, only the largest is kept, and the
+holes so left, where not on a border of the input, are filled by the triangulation of least
+total edge length, or a fan from their centroid, so that a closed input gives a closed output
+and a hole and its mirror image get mirror fills), with patches as regions, and symmetry enforced: vertices on a plane where a patch boundary crosses it
 become anchors; every anchor's mirror image, if it lies on a boundary of the same proxies (and not next to an anchor), becomes
 an anchor too; anchors whose mirror images are mutually nearest among the anchors of the same
 proxies are moved to exact mirror positions (those on a plane onto the plane).

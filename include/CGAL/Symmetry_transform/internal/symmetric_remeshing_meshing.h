@@ -20,7 +20,13 @@
 //   edge (folded onto each other), the largest is kept;
 // - anchor positions: the mean of their projections onto the planes of their patches;
 // - anchors matched across each plane (same proxies around, mutually nearest mirror images)
-//   and moved to exact mirror positions, vertices matched to themselves onto the plane.
+//   and moved to exact mirror positions, vertices matched to themselves onto the plane;
+// - the holes left by the removed folds (cycles of output border edges not on a border of the
+//   input; flaps, triangles held by their corners only, removed first) filled by the
+//   triangulation of least total edge length between the final anchor positions, or, where the
+//   cycle has none that makes no edge twice, by a fan from a vertex at its centroid: choices
+//   that only depend on lengths, invariant under a reflection, so that the fill of a hole and
+//   that of its mirror image are mirror images of each other.
 
 #include <CGAL/Symmetry_transform/internal/symmetric_remeshing_partition.h>
 
@@ -28,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <queue>
 #include <set>
@@ -76,6 +83,7 @@ public:
     triangulate();
     place_anchors(s.optimize_anchor_location);
     snap_mirrors();
+    fill_holes();
     return std::move(out_);
   }
 
@@ -378,6 +386,162 @@ private:
     for(std::size_t i = 0; i < t.size(); ++i)
       if(!removed[i]) kept.push_back(t[i]);
     t.swap(kept);
+  }
+
+  // Holes left where folded triangles were removed: each cycle of output border edges (read
+  // against the orientation of the triangles, split where it passes a vertex twice) whose
+  // edges do not all follow a border of the input is filled by the triangulation of least
+  // total edge length (dynamic programming over the cycle), between the final anchor
+  // positions; triangles that would be degenerate, duplicate an output triangle or reuse an
+  // output edge are excluded, and a cycle without such a triangulation gets a fan from a new
+  // vertex at its centroid.
+  void fill_holes()
+  {
+    auto& t = out_.triangles;
+    if(t.empty()) return;
+    typedef std::pair<std::size_t, std::size_t> Edge;
+    std::vector<char> on_border(m_.points.size(), 0);
+    for(std::size_t h = 0; h < m_.opposite.size(); ++h)
+      if(m_.opposite[h] == none) on_border[m_.source(h)] = on_border[m_.target(h)] = 1;
+    auto anchor_on_border = [&](std::size_t a) {
+      return out_.anchor_vertices[a] != none && on_border[out_.anchor_vertices[a]];
+    };
+    {
+      // A triangle none of whose edges is shared (a flap left by the removed folds, held by its
+      // corners only) goes, unless it lies on a border of the input.
+      std::map<Edge, std::size_t> count;
+      for(const auto& tri : t)
+        for(int c = 0; c < 3; ++c) ++count[std::minmax(tri[c], tri[(c + 1) % 3])];
+      std::vector<std::array<std::size_t, 3>> kept;
+      for(const auto& tri : t) {
+        bool flap = true;
+        for(int c = 0; c < 3 && flap; ++c) flap = count[std::minmax(tri[c], tri[(c + 1) % 3])] == 1;
+        if(flap && !(anchor_on_border(tri[0]) && anchor_on_border(tri[1]) && anchor_on_border(tri[2]))) continue;
+        kept.push_back(tri);
+      }
+      t.swap(kept);
+    }
+    std::set<Edge> directed;
+    std::set<std::array<std::size_t, 3>> keys;
+    for(const auto& tri : t) {
+      for(int c = 0; c < 3; ++c) directed.insert(Edge(tri[c], tri[(c + 1) % 3]));
+      std::array<std::size_t, 3> key = tri;
+      std::sort(key.begin(), key.end());
+      keys.insert(key);
+    }
+    // Hole edges: (b, a) for each output edge (a, b) without its reverse.
+    std::multimap<std::size_t, std::size_t> hole;
+    for(const Edge& e : directed)
+      if(!directed.count(Edge(e.second, e.first))) hole.insert({e.second, e.first});
+    if(hole.empty()) return;
+    auto& x = out_.anchors;
+    // Of several hole edges leaving a vertex, the shortest (a geometric choice).
+    auto take = [&](std::size_t v) {
+      auto range = hole.equal_range(v);
+      auto best = range.first;
+      for(auto it = range.first; it != range.second; ++it)
+        if((x[it->second] - x[v]).norm() < (x[best->second] - x[v]).norm()) best = it;
+      const std::size_t w = best->second;
+      hole.erase(best);
+      return w;
+    };
+    std::vector<std::vector<std::size_t>> cycles;
+    while(!hole.empty()) {
+      std::vector<std::size_t> path(1, hole.begin()->first);
+      std::map<std::size_t, std::size_t> position{{path.front(), 0}};
+      while(hole.count(path.back())) {
+        const std::size_t w = take(path.back());
+        const auto found = position.find(w);
+        if(found == position.end()) {
+          position[w] = path.size();
+          path.push_back(w);
+          continue;
+        }
+        // A cycle closes at w: cut it off the path.
+        cycles.emplace_back(path.begin() + std::ptrdiff_t(found->second), path.end());
+        for(std::size_t i = found->second + 1; i < path.size(); ++i) position.erase(path[i]);
+        path.resize(found->second + 1);
+      }
+    }
+    for(const std::vector<std::size_t>& cycle : cycles) {
+      const std::size_t n = cycle.size();
+      if(n < 3 || n > 200) continue;
+      bool follows_input_border = true;
+      for(std::size_t i = 0; i < n && follows_input_border; ++i)
+        follows_input_border = anchor_on_border(cycle[i]) && anchor_on_border(cycle[(i + 1) % n]);
+      if(follows_input_border) continue;
+      const double infinity = std::numeric_limits<double>::infinity();
+      auto length = [&](std::size_t i, std::size_t j) { return (x[cycle[i]] - x[cycle[j]]).norm(); };
+      // A triangle (i, k, j) of the cycle, oriented as the cycle, is allowed if it is not
+      // degenerate, not an output triangle and its diagonals are no output edges.
+      auto allowed = [&](std::size_t i, std::size_t k, std::size_t j) {
+        const std::size_t a = cycle[i], b = cycle[k], c = cycle[j];
+        if(a == b || b == c || a == c) return false;
+        if((x[b] - x[a]).cross(x[c] - x[a]).norm() <= 1e-12 * (x[b] - x[a]).squaredNorm() + 1e-300) return false;
+        std::array<std::size_t, 3> key = {a, b, c};
+        std::sort(key.begin(), key.end());
+        if(keys.count(key)) return false;
+        const std::pair<std::size_t, std::size_t> sides[3] = {{i, k}, {k, j}, {j, i}};
+        for(const auto& [p, q] : sides) {
+          const bool on_cycle = (p + 1) % n == q;
+          if(!on_cycle && (directed.count(Edge(cycle[p], cycle[q])) || directed.count(Edge(cycle[q], cycle[p]))))
+            return false;
+        }
+        return true;
+      };
+      // cost[i][j]: least total length of the diagonals triangulating the cycle from i to j.
+      std::vector<std::vector<double>> cost(n, std::vector<double>(n, infinity));
+      std::vector<std::vector<std::size_t>> split(n, std::vector<std::size_t>(n, none));
+      for(std::size_t i = 0; i + 1 < n; ++i) cost[i][i + 1] = 0.;
+      for(std::size_t gap = 2; gap < n; ++gap)
+        for(std::size_t i = 0; i + gap < n; ++i) {
+          const std::size_t j = i + gap;
+          const double diagonal = (i == 0 && j == n - 1) ? 0. : length(i, j);
+          for(std::size_t k = i + 1; k < j; ++k) {
+            if(cost[i][k] == infinity || cost[k][j] == infinity || !allowed(i, k, j)) continue;
+            const double c = cost[i][k] + cost[k][j] + diagonal;
+            if(c < cost[i][j]) { cost[i][j] = c; split[i][j] = k; }
+          }
+        }
+      if(cost[0][n - 1] == infinity) {
+        // No triangulation of the cycle alone (its diagonals are output edges already): a fan
+        // from a new vertex at the centroid of the cycle, the mirror image of that of the
+        // mirror cycle.
+        Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+        for(std::size_t v : cycle) centroid += x[v];
+        centroid /= double(n);
+        bool flat = false;
+        for(std::size_t i = 0; i < n && !flat; ++i) {
+          const Eigen::Vector3d &a = x[cycle[i]], &b = x[cycle[(i + 1) % n]];
+          flat = (b - a).cross(centroid - a).norm() <= 1e-12 * (b - a).squaredNorm() + 1e-300;
+        }
+        if(flat) continue;
+        const std::size_t c = x.size();
+        x.push_back(centroid);
+        out_.anchor_vertices.push_back(nearest_vertex_(centroid));
+        for(std::size_t i = 0; i < n; ++i) {
+          const std::array<std::size_t, 3> tri = {cycle[i], cycle[(i + 1) % n], c};
+          t.push_back(tri);
+          for(int e = 0; e < 3; ++e) directed.insert(Edge(tri[e], tri[(e + 1) % 3]));
+        }
+        continue;
+      }
+      std::vector<std::pair<std::size_t, std::size_t>> stack = {{0, n - 1}};
+      while(!stack.empty()) {
+        const auto [i, j] = stack.back();
+        stack.pop_back();
+        if(j < i + 2) continue;
+        const std::size_t k = split[i][j];
+        const std::array<std::size_t, 3> tri = {cycle[i], cycle[k], cycle[j]};
+        t.push_back(tri);
+        std::array<std::size_t, 3> key = tri;
+        std::sort(key.begin(), key.end());
+        keys.insert(key);
+        for(int c = 0; c < 3; ++c) directed.insert(Edge(tri[c], tri[(c + 1) % 3]));
+        stack.push_back({i, k});
+        stack.push_back({k, j});
+      }
+    }
   }
 
   void place_anchors(bool optimize)
