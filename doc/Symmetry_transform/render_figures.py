@@ -204,18 +204,21 @@ def rectangle(rgb, x, y, w, h, filled=True):
     return actor
 
 
-def legend_renderer(width, height, mesh_name):
+def colour_bar_legend(width, height, legend_h, ramp, top, label_format, bar_x, bar_w, mesh_name, caption,
+                      caption_y):
+    """The legend strip of a figure: the mesh's name at the left and a horizontal colour bar, whose
+    colours `ramp` (RGB 0-255) are spread evenly over [0, top], with `caption` to its left."""
     ren = vtk.vtkRenderer()
     ren.SetBackground(1, 1, 1)
-    ren.SetViewport(0, 0, 1, LEGEND_H / height)
-    ramp = vtk.vtkColorTransferFunction()
-    for i, c in enumerate(RAMP):
-        ramp.AddRGBPoint(i / (len(RAMP) - 1.), *[v / 255. for v in c])
+    ren.SetViewport(0, 0, 1, legend_h / height)
+    colours = vtk.vtkColorTransferFunction()
+    for i, c in enumerate(ramp):
+        colours.AddRGBPoint(top * i / (len(ramp) - 1.), *[v / 255. for v in c])
     bar = vtk.vtkScalarBarActor()
-    bar.SetLookupTable(ramp)
+    bar.SetLookupTable(colours)
     bar.SetOrientationToHorizontal()
     bar.SetNumberOfLabels(3)
-    bar.SetLabelFormat("%.1f")
+    bar.SetLabelFormat(label_format)
     bar.SetUnconstrainedFontSize(True)
     label = bar.GetLabelTextProperty()
     label.SetFontSize(14)
@@ -225,14 +228,19 @@ def legend_renderer(width, height, mesh_name):
     label.BoldOff()
     bar.SetBarRatio(0.45)
     bar.DrawFrameOff()
-    bar_x, bar_w = width / 2. - 60, 220
     bar.GetPositionCoordinate().SetCoordinateSystemToViewport()
     bar.GetPositionCoordinate().SetValue(bar_x, 2)
     bar.GetPosition2Coordinate().SetCoordinateSystemToViewport()
-    bar.GetPosition2Coordinate().SetValue(bar_w, LEGEND_H - 8)
+    bar.GetPosition2Coordinate().SetValue(bar_w, legend_h - 8)
     ren.AddActor2D(bar)
-    ren.AddActor2D(text(mesh_name + ".off", 18, 12, LEGEND_H / 2 - 8))
-    ren.AddActor2D(text("support of the reflection", 15, bar_x - 12, 12, justify_right=True))
+    ren.AddActor2D(text(mesh_name + ".off", 18, 12, legend_h / 2 - 8))
+    ren.AddActor2D(text(caption, 15, bar_x - 12, caption_y, justify_right=True))
+    return ren
+
+
+def legend_renderer(width, height, mesh_name):
+    ren = colour_bar_legend(width, height, LEGEND_H, RAMP, 1.0, "%.1f", width / 2. - 60, 220, mesh_name,
+                            "support of the reflection", 12)
     ren.AddActor2D(rectangle([0.7 + 0.3 * c / 255. for c in PLANE_RGB], width - 150, 10, 20, 16))
     ren.AddActor2D(text("plane", 15, width - 122, 12))
     return ren

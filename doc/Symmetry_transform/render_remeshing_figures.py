@@ -115,35 +115,8 @@ def trace_actor(mesh, plane):
 
 
 def legend_renderer(width, height, mesh_name):
-    ren = vtk.vtkRenderer()
-    ren.SetBackground(1, 1, 1)
-    ren.SetViewport(0, 0, 1, LEGEND_H / height)
-    ramp = vtk.vtkColorTransferFunction()
-    for i, c in enumerate(RAMP):
-        ramp.AddRGBPoint(2.0 * i / (len(RAMP) - 1.), *[v / 255. for v in c])
-    bar = vtk.vtkScalarBarActor()
-    bar.SetLookupTable(ramp)
-    bar.SetOrientationToHorizontal()
-    bar.SetNumberOfLabels(3)
-    bar.SetLabelFormat("%.0f %%")
-    bar.SetUnconstrainedFontSize(True)
-    label = bar.GetLabelTextProperty()
-    label.SetFontSize(14)
-    label.SetColor(0.1, 0.1, 0.1)
-    label.ShadowOff()
-    label.ItalicOff()
-    label.BoldOff()
-    bar.SetBarRatio(0.45)
-    bar.DrawFrameOff()
-    bar_x, bar_w = width / 2. - 20, 240
-    bar.GetPositionCoordinate().SetCoordinateSystemToViewport()
-    bar.GetPositionCoordinate().SetValue(bar_x, 2)
-    bar.GetPosition2Coordinate().SetCoordinateSystemToViewport()
-    bar.GetPosition2Coordinate().SetValue(bar_w, LEGEND_H - 8)
-    ren.AddActor2D(bar)
-    ren.AddActor2D(rf.text(mesh_name + ".off", 18, 12, LEGEND_H / 2 - 8))
-    ren.AddActor2D(rf.text("symmetry error (of the diagonal)", 15, bar_x - 12, 14, justify_right=True))
-    return ren
+    return rf.colour_bar_legend(width, height, LEGEND_H, RAMP, 2.0, "%.0f %%", width / 2. - 20, 240, mesh_name,
+                                "symmetry error (of the diagonal)", 14)
 
 
 def render_figure(mesh_name, panels, plane, png):
