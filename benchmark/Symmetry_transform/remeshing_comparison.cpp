@@ -82,46 +82,6 @@ Mesh mesh_of(Soup s)
   return out;
 }
 
-// Output soup defects: border edges (an undirected edge in one triangle only) and vertices
-// whose incident triangles are not one fan (their link is not a single path or cycle).
-struct Defects
-{
-  std::size_t border_edges = 0, non_manifold_vertices = 0;
-};
-
-Defects defects(const Soup& s)
-{
-  Defects d;
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> edges;
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(s.points.size());
-  for(const auto& t : s.triangles)
-    for(int i = 0; i < 3; ++i) {
-      ++edges[std::minmax(t[i], t[(i + 1) % 3])];
-      link[t[i]].push_back({t[(i + 1) % 3], t[(i + 2) % 3]});
-    }
-  for(const auto& e : edges) d.border_edges += e.second == 1 ? 1 : 0;
-  for(const auto& l : link) {
-    if(l.empty()) continue;
-    std::map<std::size_t, std::vector<std::size_t>> adjacent;
-    for(const auto& [a, b] : l) {
-      adjacent[a].push_back(b);
-      adjacent[b].push_back(a);
-    }
-    bool bad = false;
-    for(const auto& a : adjacent) bad = bad || a.second.size() > 2;
-    std::set<std::size_t> reached = {adjacent.begin()->first};
-    std::vector<std::size_t> stack = {adjacent.begin()->first};
-    while(!stack.empty()) {
-      const std::size_t v = stack.back();
-      stack.pop_back();
-      for(std::size_t w : adjacent[v])
-        if(reached.insert(w).second) stack.push_back(w);
-    }
-    if(bad || reached.size() != adjacent.size()) ++d.non_manifold_vertices;
-  }
-  return d;
-}
-
 struct Run
 {
   std::vector<double> seconds;
@@ -207,7 +167,7 @@ try {
         symmetry[m] = ST::symmetry_error(out, planes.front(), mesh, 0.02 * diagonal, metric_np) / diagonal;
         const double whole = ST::symmetry_error(out, planes.front(), metric_np) / diagonal;
         const char* method[3] = {"symmetric VSA, K", "CGAL VSA, K", "CGAL VSA, 2K"};
-        const Defects d = defects(runs[m].soup);
+        const auto d = ST::internal::soup_defects(runs[m].soup.points.size(), runs[m].soup.triangles);
         border[m] += d.border_edges;
         non_manifold[m] += d.non_manifold_vertices;
         std::cerr << name << " K = " << k << ", " << method[m] << ": " << d.border_edges << " border edges, "

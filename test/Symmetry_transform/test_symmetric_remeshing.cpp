@@ -184,19 +184,20 @@ Mirror_match mirror_match(const Soup& s, const Plane_3& plane, double tolerance)
   return m;
 }
 
-// Vertices of a triangle soup whose incident triangles do not form one fan (their link is not a
-// single path or cycle), triangles with repeated or collinear corners, or twice the same corners,
-// and directed edges shared by triangles.
+// Defects of the output soup: those of ST::internal::soup_defects(), and triangles with repeated
+// or collinear corners, or twice the same corners, and directed edges shared by triangles.
 struct Soup_defects
 {
-  std::size_t non_manifold_vertices = 0, degenerate = 0, duplicated = 0;
+  std::size_t non_manifold_vertices = 0, border_edges = 0, degenerate = 0, duplicated = 0;
   std::size_t folded = 0; // directed edges in more than one triangle (triangles folded onto each other)
 };
 
 Soup_defects defects(const Soup& s)
 {
   Soup_defects d;
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(s.points.size());
+  const auto manifold = ST::internal::soup_defects(s.points.size(), s.triangles);
+  d.non_manifold_vertices = manifold.non_manifold_vertices;
+  d.border_edges = manifold.border_edges;
   std::set<Triangle> seen;
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> directed;
   for(const Triangle& t : s.triangles)
@@ -206,25 +207,6 @@ Soup_defects defects(const Soup& s)
     std::sort(key.begin(), key.end());
     if(!seen.insert(key).second) ++d.duplicated;
     if(key[0] == key[1] || key[1] == key[2] || CGAL::collinear(s.points[t[0]], s.points[t[1]], s.points[t[2]])) ++d.degenerate;
-    for(int i = 0; i < 3; ++i) link[t[i]].push_back({t[(i + 1) % 3], t[(i + 2) % 3]});
-  }
-  for(const auto& edges : link) {
-    if(edges.empty()) continue;
-    std::map<std::size_t, std::vector<std::size_t>> adjacent;
-    for(const auto& [a, b] : edges) {
-      adjacent[a].push_back(b);
-      adjacent[b].push_back(a);
-    }
-    bool bad = std::any_of(adjacent.begin(), adjacent.end(), [](const auto& a) { return a.second.size() > 2; });
-    std::set<std::size_t> reached = {adjacent.begin()->first};
-    std::vector<std::size_t> stack = {adjacent.begin()->first};
-    while(!stack.empty()) {
-      const std::size_t v = stack.back();
-      stack.pop_back();
-      for(std::size_t w : adjacent[v])
-        if(reached.insert(w).second) stack.push_back(w);
-    }
-    if(bad || reached.size() != adjacent.size()) ++d.non_manifold_vertices;
   }
   return d;
 }
@@ -309,14 +291,6 @@ TEST(SymmetricRemeshing, OutputIsValidTriangleMesh)
   }
 }
 
-std::size_t border_edges(const Soup& s)
-{
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> count;
-  for(const Triangle& t : s.triangles)
-    for(int i = 0; i < 3; ++i) ++count[std::minmax(t[i], t[(i + 1) % 3])];
-  return std::size_t(std::count_if(count.begin(), count.end(), [](const auto& e) { return e.second == 1; }));
-}
-
 TEST(SymmetricRemeshing, HolesLeftByRemovedFoldsAreFilledMirrorConsistently)
 {
   // Closed inputs whose triangulation folds triangles (the removal of the folds left 6, 3 and 6
@@ -334,7 +308,7 @@ TEST(SymmetricRemeshing, HolesLeftByRemovedFoldsAreFilledMirrorConsistently)
     const Soup s = remesh(mesh, {plane}, CGAL::parameters::max_number_of_proxies(c.proxies));
     const Mirror_match m = mirror_match(s, plane, 1e-6 * diagonal_of(mesh));
     const Soup_defects ours = defects(s), cgal = defects(cgal_vsa(mesh, c.proxies));
-    EXPECT_EQ(border_edges(s), 0u) << "K = " << c.proxies;
+    EXPECT_EQ(ours.border_edges, 0u) << "K = " << c.proxies;
     EXPECT_GE(m.vertices, 0.99) << "K = " << c.proxies;
     EXPECT_GE(m.triangles, 0.99) << "K = " << c.proxies;
     EXPECT_EQ(ours.degenerate, 0u) << "K = " << c.proxies;
@@ -344,7 +318,7 @@ TEST(SymmetricRemeshing, HolesLeftByRemovedFoldsAreFilledMirrorConsistently)
   }
   const Surface_mesh mesh = bumpy_sphere<Surface_mesh>(oblique_mirror_normal());
   const Soup s = remesh(mesh, {}, CGAL::parameters::max_number_of_proxies(20));
-  EXPECT_EQ(border_edges(s), 0u);
+  EXPECT_EQ(defects(s).border_edges, 0u);
   EXPECT_EQ(defects(s).duplicated, 0u);
   EXPECT_TRUE(CGAL::is_closed(mesh_of(s)));
 }

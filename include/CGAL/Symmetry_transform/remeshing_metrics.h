@@ -17,6 +17,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -35,6 +38,47 @@ struct Approximation_error
 };
 
 namespace internal {
+
+// Defects of a triangle soup (triangles as index triples): border edges (an undirected edge of
+// one triangle only) and non-manifold vertices (whose triangles do not form one fan: their link
+// is not a single path or cycle). For the tests and the comparison with CGAL's VSA.
+struct Soup_defects
+{
+  std::size_t border_edges = 0, non_manifold_vertices = 0;
+};
+
+template <typename Triangle>
+Soup_defects soup_defects(std::size_t number_of_points, const std::vector<Triangle>& triangles)
+{
+  Soup_defects d;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> edges;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> link(number_of_points);
+  for(const Triangle& t : triangles)
+    for(int i = 0; i < 3; ++i) {
+      ++edges[std::minmax<std::size_t>(t[i], t[(i + 1) % 3])];
+      link[t[i]].push_back({t[(i + 1) % 3], t[(i + 2) % 3]});
+    }
+  for(const auto& e : edges) d.border_edges += e.second == 1 ? 1 : 0;
+  for(const auto& l : link) {
+    if(l.empty()) continue;
+    std::map<std::size_t, std::vector<std::size_t>> adjacent;
+    for(const auto& [a, b] : l) {
+      adjacent[a].push_back(b);
+      adjacent[b].push_back(a);
+    }
+    const bool branching = std::any_of(adjacent.begin(), adjacent.end(), [](const auto& a) { return a.second.size() > 2; });
+    std::set<std::size_t> reached = {adjacent.begin()->first};
+    std::vector<std::size_t> stack = {adjacent.begin()->first};
+    while(!stack.empty()) {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      for(std::size_t w : adjacent[v])
+        if(reached.insert(w).second) stack.push_back(w);
+    }
+    if(branching || reached.size() != adjacent.size()) ++d.non_manifold_vertices;
+  }
+  return d;
+}
 
 template <typename TriangleMesh, typename NamedParameters>
 std::vector<Dtriangle> metric_triangles(const TriangleMesh& tm, const NamedParameters& np)

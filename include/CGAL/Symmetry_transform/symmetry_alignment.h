@@ -125,7 +125,6 @@ public:
   }
 
 private:
-  static Eigen::Vector3d to_eigen(const Dpoint& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
   static Eigen::Vector3d corner(const Dtriangle& t, int i) { return to_eigen(t[i]); }
 
   std::vector<Dtriangle> triangles_;
