@@ -180,7 +180,8 @@ int main(int argc, char** argv)
       matcher_holder.reset();
       triangles = STI::triangles_of_mesh(mesh, get(CGAL::vertex_point, mesh));
       matcher_holder.emplace(triangles);
-      field_holder.emplace(STI::closest_triangle_field(triangles, *matcher_holder, closest_triangles, gedt));
+      field_holder.emplace(triangles, *matcher_holder, closest_triangles, gedt.origin(), gedt.voxel_size(),
+                           gedt.resolution());
     });
     const STI::Triangle_matcher& matcher = *matcher_holder;
     const STI::Closest_triangle_field& field = *field_holder;

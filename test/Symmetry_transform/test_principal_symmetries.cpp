@@ -444,12 +444,9 @@ TEST(ClosestPoints, ClosestTriangleFieldIsNearTheExactSearchInTheBand)
   shapes.emplace_back("fine ellipsoid", ellipsoid<Surface_mesh>(1., 0.6, 0.35, 5));
   for(const auto& [name, shape] : shapes) {
     const Shape<Surface_mesh> s = moved(shape, random_motion(rng));
-    const std::vector<STI::Dtriangle> triangles = STI::triangles_of_mesh(s.mesh, get(CGAL::vertex_point, s.mesh));
-    std::vector<std::int32_t> closest_triangles;
-    const Grid gedt = STI::gaussian_distance_transform_of_triangles<K>(triangles, np, &closest_triangles);
-    const STI::Triangle_matcher exact(triangles);
-    const STI::Closest_triangle_field field = STI::closest_triangle_field(triangles, exact, closest_triangles, gedt);
-    const double sigma = STI::isp_settings(np, gedt).sigma;
+    const STI::Triangle_surface<K> surface(STI::triangles_of_mesh(s.mesh, get(CGAL::vertex_point, s.mesh)), np);
+    const auto& [triangles, exact, field] = std::tie(surface.triangles, surface.matcher, surface.field);
+    const double sigma = STI::isp_settings(np, surface.gedt).sigma;
     std::vector<double> excess;
     for(const Eigen::Vector3d& sample : STI::surface_samples(triangles, np.number_of_refinement_samples(5000))) {
       const Eigen::Vector3d p = sample + sigma * Eigen::Vector3d(gaussian(rng), gaussian(rng), gaussian(rng));

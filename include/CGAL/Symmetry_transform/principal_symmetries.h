@@ -83,14 +83,29 @@ Reflective_symmetry_transform<GT> detection_transform(const Voxel_grid<GT>& gedt
     return reflective_symmetry_transform(gedt, np);
 }
 
-// The closest triangles of the voxels of a GEDT's band, as filled with it, for the walk of ISP.
+// A triangle surface ready for refinement: its GEDT, the AABB tree of its triangles, and the
+// closest triangle of each voxel of the GEDT's band (recorded with the GEDT) for the walk of ISP.
+// Built in place: the tree and the field refer to the triangles.
 template <typename GT>
-Closest_triangle_field closest_triangle_field(const std::vector<Dtriangle>& triangles, const Triangle_matcher& exact,
-                                              std::vector<std::int32_t> closest_triangles, const Voxel_grid<GT>& gedt)
+class Triangle_surface
 {
-  return Closest_triangle_field(triangles, exact, std::move(closest_triangles), gedt.origin(), gedt.voxel_size(),
-                                gedt.resolution());
-}
+  std::vector<std::int32_t> closest_triangles_; // moved into the field
+
+public:
+  const std::vector<Dtriangle> triangles;
+  const Voxel_grid<GT> gedt;
+  const Triangle_matcher matcher;
+  const Closest_triangle_field field;
+
+  template <typename NamedParameters>
+  Triangle_surface(std::vector<Dtriangle> surface_triangles, const NamedParameters& np)
+    : triangles(std::move(surface_triangles)),
+      gedt(gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles_)), matcher(triangles),
+      field(triangles, matcher, std::move(closest_triangles_), gedt.origin(), gedt.voxel_size(), gedt.resolution())
+  {}
+  Triangle_surface(const Triangle_surface&) = delete;
+  Triangle_surface& operator=(const Triangle_surface&) = delete;
+};
 
 // Candidates of the PRST refined by ISP (walking with `walk_matcher` if given), kept if they
 // stay near their bin, measured on the GEDT, merged when equal, strongest first.
@@ -173,6 +188,15 @@ struct Detection
   Reflective_symmetry_transform<GT> prst;
 };
 
+template <typename GT, typename NamedParameters>
+Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const NamedParameters& np)
+{
+  Reflective_symmetry_transform<GT> prst = detection_transform(surface.gedt, np);
+  std::vector<Principal_symmetry<GT>> symmetries = refine_candidates(
+    surface.gedt, prst, surface_samples(surface.triangles, np), surface.matcher, np, &surface.field);
+  return {std::move(symmetries), std::move(prst)};
+}
+
 template <typename TriangleMesh, typename NamedParameters>
 Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detection_of_mesh(const TriangleMesh& tm,
                                                                                           const NamedParameters& np)
@@ -180,15 +204,8 @@ Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detect
   typedef typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tm));
-  const std::vector<Dtriangle> triangles = triangles_of_mesh(tm, vpm);
-  std::vector<std::int32_t> closest_triangles;
-  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles);
-  Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
-  const Triangle_matcher matcher(triangles);
-  const Closest_triangle_field field = closest_triangle_field(triangles, matcher, std::move(closest_triangles), gedt);
-  std::vector<Principal_symmetry<GT>> symmetries =
-    refine_candidates(gedt, prst, surface_samples(triangles, np), matcher, np, &field);
-  return {std::move(symmetries), std::move(prst)};
+  const Triangle_surface<GT> surface(triangles_of_mesh(tm, vpm), np);
+  return detection_of_surface(surface, np);
 }
 
 template <typename PointRange, typename NamedParameters>
@@ -290,13 +307,9 @@ principal_symmetries(
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tm));
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
-  std::vector<std::int32_t> closest_triangles;
-  const Voxel_grid<GT> gedt = internal::gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles);
-  const internal::Triangle_matcher matcher(triangles);
-  const internal::Closest_triangle_field field =
-    internal::closest_triangle_field(triangles, matcher, std::move(closest_triangles), gedt);
-  return internal::refine_candidates(gedt, prst, internal::surface_samples(triangles, np), matcher, np, &field);
+  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, vpm), np);
+  return internal::refine_candidates(surface.gedt, prst, internal::surface_samples(surface.triangles, np),
+                                     surface.matcher, np, &surface.field);
 }
 
 /*!
@@ -361,16 +374,12 @@ refine_symmetry_plane(const TriangleMesh& tm,
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tm));
-  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
-  const internal::Triangle_matcher matcher(triangles);
-  std::vector<std::int32_t> closest_triangles;
-  const Voxel_grid<GT> gedt = internal::gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles);
-  const internal::Closest_triangle_field field =
-    internal::closest_triangle_field(triangles, matcher, std::move(closest_triangles), gedt);
-  const internal::Isp_settings settings = internal::isp_settings(np, gedt);
-  return internal::to_plane<GT>(internal::iterative_symmetric_points(internal::surface_samples(triangles, np),
-                                                                     internal::to_dplane(plane), matcher, settings,
-                                                                     internal::Isp_phase::BOTH, {}, &field)
+  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, vpm), np);
+  const internal::Isp_settings settings = internal::isp_settings(np, surface.gedt);
+  return internal::to_plane<GT>(internal::iterative_symmetric_points(internal::surface_samples(surface.triangles, np),
+                                                                     internal::to_dplane(plane), surface.matcher,
+                                                                     settings, internal::Isp_phase::BOTH, {},
+                                                                     &surface.field)
                                   .plane);
 }
 

@@ -127,7 +127,7 @@ labels, minimising the data cost \f$ \sum_f (A_f/\bar A)(-\log u_f) \f$ plus
 \f$ \lambda \sum_e (\ell_e/\bar\ell)/(1 + d_e/\bar d) \f$ over the cut edges, with
 \f$ d_e = \eta (1 - \cos\alpha_e) \f$ the angular distance of the two faces (Katz and Tal;
 \f$ \eta = 1 \f$ on concave edges, 0 on convex ones): boundaries are short and follow concave
-creases. Each label is then split into its connected parts, and parts smaller than 3 % of the
+creases. Each label is then split into its connected parts, and parts smaller than 5 % of the
 segment are merged into the neighbouring part with which they share the longest boundary: the
 children of a segment are connected, and there are two or more of them (the four legs of a table
 are four children).
@@ -136,12 +136,14 @@ A segment is not split (it is a leaf) when it lies at depth `max_segmentation_de
 splitting it would give more than `max_number_of_segments` segments (then, if a smaller split
 fits, its smallest parts are merged into their neighbours until it fits), when none of its
 planes reflects between 10 % and 90 % of its area onto it (the thesis's stopping rule), when the
-graph cut leaves a single part, or when it covers less than 1 % of the mesh's area.
+graph cut leaves a single part, or when it covers less than 2 % of the mesh's area.
 
 Plane detection, the costliest step, has defaults fitted to segmentation: a \f$ 32^3 \f$ grid
-(fitted to each segment's own bounding sphere, so sub-segments are seen at a finer absolute
-scale), \f$ 10^5 \f$ Monte Carlo samples, 2000 refinement samples and 6 planes; the named
-parameters of `detect_principal_symmetries()` override them for every segment. Segments of the
+for the mesh, and for a segment a grid with the same voxel size (at least \f$ 24^3 \f$);
+\f$ 10^5 \f$ Monte Carlo samples and 5000 refinement samples for the whole mesh, the same
+densities on a segment (at least \f$ 2 \cdot 10^4 \f$ and 1000); 6 planes. The named parameters
+of `detect_principal_symmetries()` override them (the sample counts then apply to the whole
+mesh, and are scaled on segments alike). Segments of the
 same level are examined in parallel (`number_of_threads` in all).
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles

@@ -139,6 +139,16 @@ public:
 
   std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint& hint, bool) const
   {
+    const auto [on_triangle, t] = nearest_in_cell(p);
+    if(t < 0) return exact_.closest(p, hint, false);
+    hint = {Dpoint(on_triangle.x(), on_triangle.y(), on_triangle.z()), triangles_.begin() + t};
+    return {on_triangle, normals_[std::size_t(t)]};
+  }
+
+  // The point nearest to p on the closest triangles of the 8 voxels around p, and its triangle;
+  // triangle -1 if none of these voxels lies in the band.
+  std::pair<Eigen::Vector3d, std::int32_t> nearest_in_cell(const Eigen::Vector3d& p) const
+  {
     // The cell of voxel centres around p.
     std::array<long, 3> corner;
     for(int a = 0; a < 3; ++a)
@@ -146,7 +156,7 @@ public:
     std::array<std::int32_t, 8> seen;
     std::size_t count = 0;
     double best = std::numeric_limits<double>::infinity();
-    std::pair<Eigen::Vector3d, Eigen::Vector3d> match;
+    std::pair<Eigen::Vector3d, std::int32_t> nearest(Eigen::Vector3d::Zero(), -1);
     for(long c = 0; c < 8; ++c) {
       const std::int32_t t = closest_triangles_[std::size_t(((corner[2] + (c >> 2)) * resolution_ + corner[1] + ((c >> 1) & 1)) * resolution_ +
                                                             corner[0] + (c & 1))];
@@ -157,11 +167,10 @@ public:
       const double d2 = (p - on_triangle).squaredNorm();
       if(d2 < best) {
         best = d2;
-        match = {on_triangle, normals_[std::size_t(t)]};
-        hint = {Dpoint(on_triangle.x(), on_triangle.y(), on_triangle.z()), triangles_.begin() + t};
+        nearest = {on_triangle, t};
       }
     }
-    return count > 0 ? match : exact_.closest(p, hint, false);
+    return nearest;
   }
 
 private:

@@ -171,26 +171,18 @@ inline std::vector<std::vector<std::size_t>> merge_small_parts(const Segmentatio
   return parts;
 }
 
-typedef CGAL::Surface_mesh<Dpoint> Soup_mesh;
-
-// The faces as a mesh of their own, each face with its own three vertices (a triangle soup: a
-// subset of a mesh's faces can meet at a vertex in ways a halfedge mesh rejects, and the detection
-// only reads triangles), degenerate faces left out.
-inline Soup_mesh soup_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
+// The triangles of the faces, degenerate faces left out: a subset of a mesh's faces can meet at a
+// vertex in ways a halfedge mesh rejects, and the detection only reads triangles.
+inline std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
 {
-  Soup_mesh soup;
-  soup.reserve(Soup_mesh::size_type(3 * faces.size()), Soup_mesh::size_type(3 * faces.size()),
-               Soup_mesh::size_type(faces.size()));
+  std::vector<Dtriangle> triangles;
+  triangles.reserve(faces.size());
+  auto point = [](const Eigen::Vector3d& p) { return Dpoint(p.x(), p.y(), p.z()); };
   for(std::size_t f : faces) {
-    if(!(mesh.areas[f] > 0.)) continue;
-    std::array<Soup_mesh::Vertex_index, 3> v;
-    for(int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d& p = mesh.triangles[f][k];
-      v[k] = soup.add_vertex(Dpoint(p.x(), p.y(), p.z()));
-    }
-    soup.add_face(v[0], v[1], v[2]);
+    const auto& t = mesh.triangles[f];
+    if(mesh.areas[f] > 0.) triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
   }
-  return soup;
+  return triangles;
 }
 
 } // namespace internal

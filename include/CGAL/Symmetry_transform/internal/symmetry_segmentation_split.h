@@ -10,7 +10,6 @@
 // fuzzy clustering and graph cut, and the connected parts of the labels. Segments of one level
 // are split in parallel.
 
-#include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/symmetry_segmentation_clustering.h>
 #include <CGAL/Symmetry_transform/internal/symmetry_segmentation_dual_graph.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
@@ -30,8 +29,8 @@ namespace internal {
 // A segment reflected by none of its planes over more than this fraction of its area, or by all
 // of them over more than its complement, is not split (thesis, section 5.2.2).
 constexpr double least_partial_fraction = 0.1;
-// The GEDT of the feature vectors has this many times the detection's resolution (see split_segment()).
-constexpr long feature_resolution_factor = 2;
+// The Gaussian width of the feature vectors, relative to the detection's (see split_segment()).
+constexpr double feature_width_factor = 0.5;
 // Parts of a split smaller than this fraction of the segment are merged into a neighbour.
 constexpr double least_part_fraction = 0.05;
 
@@ -63,7 +62,7 @@ Segmentation_settings segmentation_settings(const NamedParameters& np)
   s.gaussian_width = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), 1.5));
   s.number_of_samples = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), 100000));
   s.number_of_refinement_samples =
-    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), 10000));
+    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), 5000));
   s.number_of_iterations = unsigned(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20));
   s.max_number_of_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), 6));
   s.symmetry_threshold = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), 0.1));
@@ -79,9 +78,16 @@ Segmentation_settings segmentation_settings(const NamedParameters& np)
   return s;
 }
 
-// Refinement samples of a segment covering `fraction` of the mesh's area: the density of the whole
-// mesh's, at least this many.
+// Refinement samples and Monte Carlo samples of a segment covering `fraction` of the mesh's
+// area: the density of the whole mesh's, at least these many.
 constexpr std::size_t least_refinement_samples = 1000;
+constexpr std::size_t least_monte_carlo_samples = 20000;
+
+// `count` scaled by `fraction`, at least `least` (or `count` if smaller).
+inline std::size_t samples_of_fraction(std::size_t count, double fraction, std::size_t least)
+{
+  return (std::max)((std::min)(least, count), std::size_t(std::lround(fraction * double(count))));
+}
 
 // The smallest grid of a segment below the root, if the root's is larger.
 constexpr long least_segment_resolution = 24;
@@ -100,13 +106,10 @@ inline long segment_resolution(const Segmentation_settings& s, double radius, do
 // The named parameters of the detection on a segment's sub-mesh.
 inline auto detection_parameters(const Segmentation_settings& s, double fraction, long resolution, unsigned threads)
 {
-  const std::size_t samples = (std::max)(
-    (std::min)(least_refinement_samples, s.number_of_refinement_samples),
-    std::size_t(std::lround(fraction * double(s.number_of_refinement_samples))));
   return CGAL::parameters::grid_resolution(resolution)
     .gaussian_width(s.gaussian_width)
-    .number_of_samples(s.number_of_samples)
-    .number_of_refinement_samples(samples)
+    .number_of_samples(samples_of_fraction(s.number_of_samples, fraction, least_monte_carlo_samples))
+    .number_of_refinement_samples(samples_of_fraction(s.number_of_refinement_samples, fraction, least_refinement_samples))
     .number_of_iterations(s.number_of_iterations)
     .max_number_of_planes(s.max_number_of_planes)
     .symmetry_threshold(s.symmetry_threshold)
@@ -150,49 +153,46 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
 {
   const auto start = std::chrono::steady_clock::now();
   Split split;
-  const Soup_mesh soup = soup_of(mesh, faces);
   const auto np = detection_parameters(settings, fraction, resolution, threads);
-  split.planes = detect_principal_symmetries(soup, np);
+  const Triangle_surface<Dkernel> surface(triangles_of_faces(mesh, faces), np);
+  split.planes = detection_of_surface(surface, np).symmetries;
   auto since_start = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   split.detection_seconds = since_start();
 
   // Features: the support of each plane on each face, L_ij in the thesis, "the average value in
   // the GEDT of a point of face i reflected by plane j", at the centroid and three interior
-  // points of the face (as symmetry_support(), which measures the same with closest-point
-  // queries, six times slower here). The GEDT of the features has twice the detection's
-  // resolution and the same width in voxels, i.e. half its width: supports closer to 0 or 1
-  // (a face is mirrored or it is not) cluster more cleanly. Values are divided by the mean value
-  // at the unreflected points (the surface itself), so that a perfectly mirrored face gets 1.
-  const Voxel_grid<Dkernel> gedt = gaussian_distance_transform(
-    soup, CGAL::parameters::grid_resolution(feature_resolution_factor * resolution)
-            .gaussian_width(settings.gaussian_width)
-            .number_of_threads(threads));
+  // points of the face (as symmetry_support()). The GEDT is evaluated exactly, from the distance
+  // to the nearest triangle that the detection's closest-triangle field offers, with half the
+  // detection's Gaussian width: supports closer to 0 or 1 (a face is mirrored or it is not)
+  // cluster more cleanly. Points reflected beyond the field's band get 0.
+  const double sigma = feature_width_factor * isp_settings(np, surface.gedt).sigma;
+  const double inverse_two_sigma2 = 1. / (2. * sigma * sigma);
   std::vector<double> weights(faces.size());
   std::vector<std::array<Eigen::Vector3d, 4>> points(faces.size());
-  double area = 0., surface_value = 0.;
+  double area = 0.;
   for(std::size_t i = 0; i < faces.size(); ++i) {
     const auto& t = mesh.triangles[faces[i]];
     weights[i] = mesh.areas[faces[i]];
     points[i] = {(t[0] + t[1] + t[2]) / 3., (4. * t[0] + t[1] + t[2]) / 6., (t[0] + 4. * t[1] + t[2]) / 6.,
                  (t[0] + t[1] + 4. * t[2]) / 6.};
-    for(const Eigen::Vector3d& p : points[i]) surface_value += weights[i] * gedt.trilinear_value(p.x(), p.y(), p.z()) / 4.;
     area += weights[i];
   }
-  surface_value /= area;
   Eigen::MatrixXd features = Eigen::MatrixXd::Zero(Eigen::Index(faces.size()), Eigen::Index(split.planes.size()));
   for(std::size_t j = 0; j < split.planes.size(); ++j) {
     const Dplane mirror = to_dplane(split.planes[j].plane);
-    double supported = 0.;
-    for(std::size_t i = 0; i < faces.size(); ++i) {
-      double sum = 0.;
-      for(const Eigen::Vector3d& p : points[i]) {
-        const Eigen::Vector3d q = mirror.reflect(p);
-        sum += gedt.trilinear_value(q.x(), q.y(), q.z());
+    parallel_for(faces.size(), threads, [&](unsigned, std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end; ++i) {
+        double sum = 0.;
+        for(const Eigen::Vector3d& p : points[i]) {
+          const Eigen::Vector3d q = mirror.reflect(p);
+          const auto [on_surface, triangle] = surface.field.nearest_in_cell(q);
+          if(triangle >= 0) sum += std::exp(-(q - on_surface).squaredNorm() * inverse_two_sigma2);
+        }
+        features(Eigen::Index(i), Eigen::Index(j)) = sum / 4.;
       }
-      const double support = (std::min)(1., sum / (4. * surface_value));
-      features(Eigen::Index(i), Eigen::Index(j)) = support;
-      supported += weights[i] * support;
-    }
+    });
+    double supported = 0.;
+    for(std::size_t i = 0; i < faces.size(); ++i) supported += weights[i] * features(Eigen::Index(i), Eigen::Index(j));
     const double fraction = supported / area;
     split.reflected_fractions.push_back(fraction);
     if(fraction >= least_partial_fraction && fraction <= 1. - least_partial_fraction) split.partial_symmetry = true;
