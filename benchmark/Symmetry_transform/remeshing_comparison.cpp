@@ -101,7 +101,7 @@ try {
   std::vector<std::string> meshes = split(default_meshes);
   std::vector<std::size_t> proxies = {50, 100, 200};
   std::size_t planes_kept = 1, resolution = 64, repeats = 3;
-  double alpha = 0.;
+  double alpha = 0.002; // the default of position_weight
   for(int a = 1; a + 1 < argc; a += 2) {
     const std::string arg = argv[a], value = argv[a + 1];
     if(arg == "--meshes") meshes = split(value);

@@ -10,7 +10,7 @@
 //          [--output FILE.ply]
 //   --resolution: grid resolution of the plane detection (default 64)
 //   --planes: how many detected planes to keep (default 1); --plane gives one instead (repeatable)
-//   --alpha: the position weight of the metric (default 0); --strongest 1: each face reflected
+//   --alpha: the position weight of the metric (default 0.002, the thesis's); --strongest 1: each face reflected
 //   only through its strongest plane (for several local symmetries)
 //   writes FILE.ply (symmetric VSA) and FILE_cgal_vsa.ply (CGAL's VSA, K proxies)
 
@@ -94,7 +94,7 @@ int main(int argc, char** argv)
 try {
   std::string filename, output = "symmetric_remeshing.ply";
   std::size_t resolution = 64, planes_kept = 1, proxies = 50, seed = 0;
-  double alpha = 0.;
+  double alpha = 0.002; // the default of position_weight
   bool verbose = false, strongest = false;
   std::vector<K::Plane_3> planes;
   for(int a = 1; a < argc; ++a) {

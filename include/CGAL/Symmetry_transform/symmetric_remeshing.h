@@ -117,10 +117,11 @@ The error of a face \f$ t \f$ for a patch of proxy \f$ P \f$ is
 with \f$ c \f$ the centroids, \f$ n \f$ the unit normals (the proxy's moved by the patch's
 transform), \f$ a_t \f$ the area of \f$ t \f$ and \f$ A_{avg} \f$ the mean face area: the
 area-weighted form of the thesis's combined metric, the \f$ L^{2,1} \f$ metric of CGAL's VSA for
-\f$ \alpha = 0 \f$.
+\f$ \alpha = 0 \f$. The default \f$ \alpha = 0.002 \f$ is the thesis's.
 
 The output mesh is extracted as in CGAL's VSA (anchors where three patches meet, boundary chords
-subdivided, a Dijkstra flooding of each patch from its anchors giving the triangles; of the
+subdivided, a boundary cycle with fewer than three anchors completed with the vertices farthest
+from its anchors, a Dijkstra flooding of each patch from its anchors giving the triangles; of the
 triangles folded onto each other, sharing a directed edge, only the largest is kept, and the
 holes so left, where not on a border of the input, are filled by the triangulation of least
 total edge length, or a fan from their centroid, so that a closed input gives a closed output
@@ -128,7 +129,7 @@ and a hole and its mirror image get mirror fills), with patches as regions, and 
 become anchors; every anchor's mirror image, if it lies on a boundary of the same proxies (and not next to an anchor), becomes
 an anchor too; anchors whose mirror images are mutually nearest among the anchors of the same
 proxies are moved to exact mirror positions (those on a plane onto the plane).
-With an empty range of planes, this is plain VSA.
+With an empty range of planes and `position_weight(0)`, this is plain VSA.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam PlaneRange a range of `geom_traits::Plane_3` (e.g. the `plane` of each `Principal_symmetry`)
@@ -167,7 +168,7 @@ With an empty range of planes, this is plain VSA.
   \cgalParamNBegin{position_weight}
     \cgalParamDescription{\f$ \alpha \in [0,1] \f$ of the metric: the weight of centroid distances against normal deviations}
     \cgalParamType{`double`}
-    \cgalParamDefault{0 (the \f$ L^{2,1} \f$ metric)}
+    \cgalParamDefault{0.002, the thesis's value (0 is the \f$ L^{2,1} \f$ metric of CGAL's VSA)}
   \cgalParamNEnd
   \cgalParamNBegin{strongest_plane_only}
     \cgalParamDescription{whether each face may only be reflected through the plane whose mirror
@@ -290,7 +291,7 @@ bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRang
   settings.number_of_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(20));
   settings.number_of_relaxations = choose_parameter(get_parameter(np, internal_np::number_of_relaxations), std::size_t(5));
   settings.seeding = choose_parameter(get_parameter(np, internal_np::seeding_method), Surface_mesh_approximation::HIERARCHICAL);
-  settings.position_weight = choose_parameter(get_parameter(np, internal_np::st_position_weight), 0.);
+  settings.position_weight = choose_parameter(get_parameter(np, internal_np::st_position_weight), 0.002);
   if(!(settings.position_weight >= 0. && settings.position_weight <= 1.))
     throw std::invalid_argument("Symmetry_transform: position_weight must lie in [0,1]");
   settings.strongest_plane_only = choose_parameter(get_parameter(np, internal_np::st_strongest_plane_only), false);

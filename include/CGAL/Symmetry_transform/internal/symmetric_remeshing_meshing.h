@@ -212,7 +212,10 @@ private:
         head = next_boundary(head);
         if(head == start) break;
       }
-      if(anchor_[m_.target(head)] == none) attach(m_.target(head));
+      if(anchor_[m_.target(head)] == none) {
+        head = farthest_from_centroid(head);
+        attach(m_.target(head));
+      }
       cycles_.push_back(head);
       std::size_t h = head;
       do {
@@ -223,38 +226,54 @@ private:
     }
   }
 
-  // A boundary cycle needs three anchors: one is added at the vertex farthest from the others.
+  // A boundary cycle needs three anchors: each one added is the vertex whose distance to the
+  // nearest anchor of the cycle is largest. The rule depends on the anchors, not on where the
+  // walk around the cycle starts: mirror cycles get mirror anchors.
   void add_anchors_to_short_cycles()
   {
     for(std::size_t head : cycles_) {
-      std::vector<std::size_t> others;
-      std::size_t count = 0, h = head;
+      std::vector<std::size_t> anchors, others;
+      std::size_t h = head;
       do {
         h = next_boundary(h);
-        if(anchor_[m_.target(h)] != none) ++count;
-        else others.push_back(m_.target(h));
+        (anchor_[m_.target(h)] != none ? anchors : others).push_back(m_.target(h));
       } while(h != head);
-      if(count > 2 || others.empty()) continue;
-      const Eigen::Vector3d& a = m_.points[m_.target(head)];
-      std::size_t best = others.front();
-      double largest = -1.;
-      for(std::size_t v : others) {
-        const double d = (m_.points[v] - a).norm();
-        if(d > largest) { largest = d; best = v; }
-      }
-      attach(best);
-      if(count < 2 && others.size() > 1) { // a cycle with one anchor needs two more
-        const Eigen::Vector3d& b = m_.points[best];
-        largest = -1.;
-        std::size_t second = none;
-        for(std::size_t v : others)
-          if(v != best) {
-            const double d = std::min((m_.points[v] - a).norm(), (m_.points[v] - b).norm());
-            if(d > largest) { largest = d; second = v; }
-          }
-        if(second != none) attach(second);
+      while(anchors.size() < 3 && !others.empty()) {
+        std::size_t best = 0;
+        double largest = -1.;
+        for(std::size_t i = 0; i < others.size(); ++i) {
+          double nearest = std::numeric_limits<double>::infinity();
+          for(std::size_t a : anchors) nearest = (std::min)(nearest, (m_.points[others[i]] - m_.points[a]).norm());
+          if(nearest > largest) { largest = nearest; best = i; }
+        }
+        attach(others[best]);
+        anchors.push_back(others[best]);
+        others.erase(others.begin() + std::ptrdiff_t(best));
       }
     }
+  }
+
+  // The boundary halfedge of the cycle of `head` whose target lies farthest from the cycle's
+  // centroid: the first anchor of a cycle that has none, chosen so that mirror cycles get mirror
+  // anchors (the first halfedge in index order would not).
+  std::size_t farthest_from_centroid(std::size_t head) const
+  {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    std::size_t count = 0, h = head;
+    do {
+      centroid += m_.points[m_.target(h)];
+      ++count;
+      h = next_boundary(h);
+    } while(h != head);
+    centroid /= double(count);
+    std::size_t best = head;
+    double largest = -1.;
+    do {
+      const double d = (m_.points[m_.target(h)] - centroid).squaredNorm();
+      if(d > largest) { largest = d; best = h; }
+      h = next_boundary(h);
+    } while(h != head);
+    return best;
   }
 
   // Each anchor's mirror images through the planes become anchors too, where the mesh vertex
