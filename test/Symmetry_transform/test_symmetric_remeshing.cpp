@@ -46,11 +46,12 @@ struct Soup
   std::vector<Triangle> triangles;
 };
 
-// The unit icosphere (Loop-subdivided icosahedron, projected) with its vertices moved radially by
-// a bump function of the coordinates along e1, e2 and of the square of the coordinate along m:
-// every mirror plane of the icosahedron through m stays a plane of symmetry, tessellation included.
-template <typename Mesh>
-Mesh bumpy_sphere(const Vector_3& m, int subdivisions = 3)
+// The unit icosphere (Loop-subdivided icosahedron, projected) with its vertices moved radially to
+// radius(a, b, c), (a, b, c) the unit direction's coordinates along e1, e2 and m (e1, e2 in the
+// plane of normal m): a radius even in c keeps every mirror plane of the icosahedron through m a
+// plane of symmetry, tessellation included.
+template <typename Mesh, typename Radius>
+Mesh radial_sphere(const Vector_3& m, int subdivisions, const Radius& radius)
 {
   Mesh mesh;
   CGAL::make_icosahedron(mesh, Point_3(0, 0, 0), 1.);
@@ -62,11 +63,18 @@ Mesh bumpy_sphere(const Vector_3& m, int subdivisions = 3)
   for(auto v : vertices(mesh)) {
     const Vector_3 p = get(vpm, v) - CGAL::ORIGIN;
     const Vector_3 u = p / std::sqrt(p.squared_length());
-    const double a = u * axes[0], b = u * axes[1], c = u * n;
-    const double r = 1. + 0.25 * std::sin(3. * a + 0.5) * std::cos(2. * b + 0.7) + 0.4 * c * c + 0.2 * a;
-    put(vpm, v, CGAL::ORIGIN + r * u);
+    put(vpm, v, CGAL::ORIGIN + radius(u * axes[0], u * axes[1], u * n) * u);
   }
   return mesh;
+}
+
+// A bumpy sphere symmetric about the plane of normal m through the origin.
+template <typename Mesh>
+Mesh bumpy_sphere(const Vector_3& m, int subdivisions = 3)
+{
+  return radial_sphere<Mesh>(m, subdivisions, [](double a, double b, double c) {
+    return 1. + 0.25 * std::sin(3. * a + 0.5) * std::cos(2. * b + 0.7) + 0.4 * c * c + 0.2 * a;
+  });
 }
 
 // A wavier variant (higher frequencies, larger amplitude), symmetric about the same planes: its
@@ -74,22 +82,10 @@ Mesh bumpy_sphere(const Vector_3& m, int subdivisions = 3)
 template <typename Mesh>
 Mesh wavy_sphere(const Vector_3& m, double frequency, double amplitude)
 {
-  Mesh mesh;
-  CGAL::make_icosahedron(mesh, Point_3(0, 0, 0), 1.);
-  CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(3));
-  const Plane_3 plane(CGAL::ORIGIN, m);
-  const auto axes = in_plane_axes(plane);
-  const Vector_3 n = unit_normal(plane);
-  auto vpm = get(CGAL::vertex_point, mesh);
-  for(auto v : vertices(mesh)) {
-    const Vector_3 p = get(vpm, v) - CGAL::ORIGIN;
-    const Vector_3 u = p / std::sqrt(p.squared_length());
-    const double a = u * axes[0], b = u * axes[1], c = u * n;
-    const double r = 1. + amplitude * std::sin(frequency * a + 0.5) * std::cos((frequency - 1.) * b + 0.7) + 0.4 * c * c +
-                     0.2 * a + amplitude * std::cos(frequency * c * c * 3.);
-    put(vpm, v, CGAL::ORIGIN + r * u);
-  }
-  return mesh;
+  return radial_sphere<Mesh>(m, 3, [=](double a, double b, double c) {
+    return 1. + amplitude * std::sin(frequency * a + 0.5) * std::cos((frequency - 1.) * b + 0.7) + 0.4 * c * c + 0.2 * a +
+           amplitude * std::cos(frequency * c * c * 3.);
+  });
 }
 
 // A mirror plane of the icosahedron that is not a coordinate plane (it cuts faces).
