@@ -43,7 +43,12 @@
 #include <string>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 namespace {
+
+using benchmark_utilities::split;
+using benchmark_utilities::mesh_path;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -56,15 +61,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 const char* default_meshes = "bull.off,cow.off,camel.off,dino.off,elephant.off,triceratops.off,homer.off,"
                              "lion.off,bear.off,armadillo.off,man.off,mannequin-devil.off,diplodocus.off,"
                              "couplingdown.off,fandisk.off,rotor_small.off";
-
-std::vector<std::string> split(const std::string& list)
-{
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  for(std::string item; std::getline(stream, item, ',');)
-    if(!item.empty()) items.push_back(item);
-  return items;
-}
 
 int positive(const std::string& option, const std::string& text)
 {
@@ -167,7 +163,7 @@ try {
   double sum_symmetry = 0., sum_pca = 0.;
   for(const std::string& name : split(meshes)) {
     Mesh mesh;
-    const std::string path = std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name;
+    const std::string path = mesh_path(name);
     if(!CGAL::IO::read_polygon_mesh(path, mesh) || is_empty(mesh)) {
       std::cerr << "skipped " << path << ": cannot read it\n";
       continue;

@@ -31,14 +31,16 @@
 #include <utility>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 namespace {
+
+using benchmark_utilities::mesh_path;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace ST = CGAL::Symmetry_transform;
 typedef ST::Symmetry_descriptor<K> Descriptor;
-
-std::string mesh_path(const std::string& name) { return std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name; }
 
 // Descriptors are computed once per mesh and resolution (2e5 Monte Carlo samples: the values,
 // not their accuracy, matter here).

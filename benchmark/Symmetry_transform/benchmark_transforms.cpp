@@ -37,7 +37,11 @@
 #include <utility>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 namespace {
+
+using benchmark_utilities::mesh_path;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -45,8 +49,6 @@ typedef CGAL::Symmetry_transform::Voxel_grid<K> Grid;
 namespace ST = CGAL::Symmetry_transform;
 
 constexpr std::size_t monte_carlo_samples = 2000000;
-
-std::string mesh_path(const std::string& name) { return std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name; }
 
 // Meshes and GEDTs are computed once and kept: they are inputs, not what is measured.
 const Mesh& mesh(const std::string& name)

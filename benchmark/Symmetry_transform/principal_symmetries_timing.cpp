@@ -50,35 +50,24 @@
 #include <thread>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 namespace {
+
+using benchmark_utilities::split;
+using benchmark_utilities::median;
+using benchmark_utilities::mesh_path;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace ST = CGAL::Symmetry_transform;
 namespace STI = CGAL::Symmetry_transform::internal;
 
-std::vector<std::string> split(const std::string& s)
-{
-  std::vector<std::string> result;
-  std::stringstream ss(s);
-  std::string item;
-  while(std::getline(ss, item, ','))
-    if(!item.empty()) result.push_back(item);
-  return result;
-}
-
 std::string format(const char* fmt, double x)
 {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, fmt, x);
   return buffer;
-}
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 // Median wall time in seconds of `repeats` calls of f.
@@ -146,7 +135,7 @@ int main(int argc, char** argv)
   const auto np = CGAL::parameters::grid_resolution(resolution);
   for(const std::string& name : meshes) {
     const std::string path =
-      name.find('/') == std::string::npos ? std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name : name;
+      mesh_path(name);
     Mesh mesh;
     if(!CGAL::IO::read_polygon_mesh(path, mesh) || faces(mesh).empty()) {
       std::cerr << "cannot read " << path << " (run scripts/setup.sh)\n";

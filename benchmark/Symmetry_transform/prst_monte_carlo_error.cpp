@@ -47,7 +47,12 @@
 #include <thread>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 namespace {
+
+using benchmark_utilities::split;
+using benchmark_utilities::mesh_path;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -72,16 +77,6 @@ const char* long_name(ST::Monte_carlo_estimator e)
   case ST::Monte_carlo_estimator::BOUNDED_WEIGHT: return "BOUNDED_WEIGHT";
   }
   return "?";
-}
-
-std::vector<std::string> split(const std::string& s)
-{
-  std::vector<std::string> result;
-  std::stringstream ss(s);
-  std::string item;
-  while(std::getline(ss, item, ','))
-    if(!item.empty()) result.push_back(item);
-  return result;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -195,7 +190,7 @@ int main(int argc, char** argv)
             << "; errors are ||mc - exact|| / ||exact|| over all bins; time: the PRST alone (GEDT excluded).\n";
   for(const std::string& name : meshes) {
     const std::string path =
-      name.find('/') == std::string::npos ? std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name : name;
+      mesh_path(name);
     Mesh mesh;
     if(!CGAL::IO::read_polygon_mesh(path, mesh) || faces(mesh).empty()) {
       std::cerr << "cannot read " << path << " (run scripts/setup.sh)\n";

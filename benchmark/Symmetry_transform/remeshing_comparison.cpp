@@ -49,7 +49,13 @@
 #include <string>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 namespace {
+
+using benchmark_utilities::split;
+using benchmark_utilities::median;
+using benchmark_utilities::mesh_path;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -58,15 +64,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 namespace VSA = CGAL::Surface_mesh_approximation;
 
 const char* default_meshes = "bull.off,cow.off,elephant.off,triceratops.off,homer.off,mannequin-devil.off";
-
-std::vector<std::string> split(const std::string& list)
-{
-  std::vector<std::string> items;
-  std::stringstream in(list);
-  for(std::string item; std::getline(in, item, ',');)
-    if(!item.empty()) items.push_back(item);
-  return items;
-}
 
 struct Soup
 {
@@ -87,12 +84,6 @@ struct Run
   std::vector<double> seconds;
   Soup soup;
 };
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 } // namespace
 
@@ -124,7 +115,7 @@ try {
   std::size_t border[3] = {0, 0, 0}, non_manifold[3] = {0, 0, 0};
   std::vector<double> ratios, geometric_k, geometric_2k, symmetry_k, symmetry_2k;
   for(const std::string& name : meshes) {
-    const std::string path = name.find('/') == std::string::npos ? std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name : name;
+    const std::string path = mesh_path(name);
     Mesh mesh;
     if(!PMP::IO::read_polygon_mesh(path, mesh) || is_empty(mesh)) throw std::runtime_error("cannot read " + path);
     if(!CGAL::is_triangle_mesh(mesh)) PMP::triangulate_faces(mesh);

@@ -33,7 +33,13 @@
 #include <string>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 namespace {
+
+using benchmark_utilities::split;
+using benchmark_utilities::median;
+using benchmark_utilities::mesh_path;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -41,21 +47,6 @@ namespace ST = CGAL::Symmetry_transform;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 const char* default_meshes = "bull.off,cow.off,dino.off,elephant.off,camel.off,homer.off";
-
-std::vector<std::string> split(const std::string& list)
-{
-  std::vector<std::string> items;
-  std::stringstream in(list);
-  for(std::string item; std::getline(in, item, ',');)
-    if(!item.empty()) items.push_back(item);
-  return items;
-}
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 == 1 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 template <typename F>
 double seconds_of(const F& f)
@@ -98,7 +89,7 @@ try {
                "<= 8 / SDF |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const std::string& name : split(meshes)) {
     Mesh mesh;
-    const std::string file = std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name;
+    const std::string file = mesh_path(name);
     if(!PMP::IO::read_polygon_mesh(file, mesh) || is_empty(mesh)) throw std::runtime_error("cannot read " + file);
     if(!CGAL::is_triangle_mesh(mesh)) PMP::triangulate_faces(mesh);
 

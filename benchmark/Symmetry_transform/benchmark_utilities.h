@@ -1,0 +1,44 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+//
+// Helpers shared by the benchmark programs: comma-separated lists, medians, sample mesh paths.
+
+#ifndef SYMMETRY_TRANSFORM_BENCHMARK_UTILITIES_H
+#define SYMMETRY_TRANSFORM_BENCHMARK_UTILITIES_H
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace benchmark_utilities {
+
+// The non-empty items of a comma-separated list.
+inline std::vector<std::string> split(const std::string& list)
+{
+  std::vector<std::string> items;
+  std::stringstream in(list);
+  for(std::string item; std::getline(in, item, ',');)
+    if(!item.empty()) items.push_back(item);
+  return items;
+}
+
+// The median (the mean of the two middle values for an even count).
+inline double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// A mesh given as a bare name is one of CGAL's sample meshes, in SYMMETRY_TRANSFORM_DATA_DIR/meshes/;
+// a name with a '/' is a path.
+inline std::string mesh_path(const std::string& name)
+{
+  return name.find('/') == std::string::npos ? std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name : name;
+}
+
+} // namespace benchmark_utilities
+
+#endif // SYMMETRY_TRANSFORM_BENCHMARK_UTILITIES_H
