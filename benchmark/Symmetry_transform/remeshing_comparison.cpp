@@ -17,11 +17,18 @@
 // both in units of 1e-3 of the bounding-box diagonal;
 // - validity: border edges (an edge of one triangle only) and non-manifold vertices (whose
 //   triangles are not one fan), per case on stderr and in all at the end.
+// The input's own symmetry error is printed first. With --symmetrization-cost 1, the program
+// only charts, per mesh, what making the input itself more symmetric costs in geometric error
+// (the input moved a quarter, half, ... of the way to its symmetrized shape, see
+// partly_symmetrized()): an estimate of the symmetry that an output close to the input can gain.
 //
 // usage: remeshing_comparison [--meshes a.off,b.off,...] [--proxies 50,100,200] [--planes P]
-//          [--resolution N] [--alpha A] [--repeats R]
+//          [--resolution N] [--alpha A] [--repeats R] [--symmetrization-cost 0|1]
 // Figures and the commands that produced them: RESULTS.md.
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -79,6 +86,28 @@ Mesh mesh_of(Soup s)
   return out;
 }
 
+// The input moved by the fraction t of the way to its symmetrized shape: each vertex x to
+// x + t (s(x) - x), where s(x) = (x + R(q)) / 2 and q is the point of the input nearest to the
+// mirror image R(x). Halfway to its mirror partner is the smallest move that makes a pair
+// symmetric, so these shapes chart the geometric error that a given gain in symmetry costs
+// an output that has no error of its own.
+Mesh partly_symmetrized(const Mesh& mesh, const K::Plane_3& plane, double t)
+{
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
+  const K::Vector_3 n = plane.orthogonal_vector();
+  const auto reflect = [&](const K::Point_3& p) {
+    return p - 2. * (n * (p - CGAL::ORIGIN) + plane.d()) / n.squared_length() * n;
+  };
+  Mesh out = mesh;
+  for(auto v : vertices(mesh)) {
+    const K::Point_3& x = mesh.point(v);
+    const K::Point_3 partner = reflect(tree.closest_point(reflect(x)));
+    out.point(v) = x + 0.5 * t * (partner - x);
+  }
+  return out;
+}
+
 struct Run
 {
   std::vector<double> seconds;
@@ -93,6 +122,7 @@ try {
   std::vector<std::size_t> proxies = {50, 100, 200};
   std::size_t planes_kept = 1, resolution = 64, repeats = 3;
   double alpha = 0.002; // the default of position_weight
+  bool symmetrization_cost = false;
   for(int a = 1; a + 1 < argc; a += 2) {
     const std::string arg = argv[a], value = argv[a + 1];
     if(arg == "--meshes") meshes = split(value);
@@ -103,6 +133,7 @@ try {
     else if(arg == "--resolution") resolution = std::stoul(value);
     else if(arg == "--alpha") alpha = std::stod(value);
     else if(arg == "--repeats") repeats = std::max<std::size_t>(1, std::stoul(value));
+    else if(arg == "--symmetrization-cost") symmetrization_cost = value != "0";
     else throw std::invalid_argument("unknown option: " + arg);
   }
 
@@ -133,6 +164,22 @@ try {
               << " s) | " << num_faces(mesh) << " | | | | | | |\n";
     if(planes.empty()) continue;
     const auto metric_np = CGAL::parameters::number_of_points_on_faces(20000);
+    // The input's own asymmetry: an output cannot be much more symmetric than the input without
+    // moving away from it (pointwise, its symmetry error is at least the input's minus about
+    // twice its distance to the input).
+    std::cout << "| | | | input | " << num_vertices(mesh) << " | | " << std::setprecision(2)
+              << 1e3 * ST::symmetry_error(mesh, planes.front(), mesh, 0.02 * diagonal, metric_np) / diagonal << " ("
+              << 1e3 * ST::symmetry_error(mesh, planes.front(), metric_np) / diagonal << ") | |\n";
+    if(symmetrization_cost) {
+      for(double t : {0.25, 0.5, 0.75, 1.}) {
+        const Mesh moved = partly_symmetrized(mesh, planes.front(), t);
+        std::cout << "| | | | input, " << t << " of the way to symmetric | | " << std::setprecision(2)
+                  << 1e3 * ST::approximation_error(mesh, moved, metric_np).rms / diagonal << " | "
+                  << 1e3 * ST::symmetry_error(moved, planes.front(), mesh, 0.02 * diagonal, metric_np) / diagonal
+                  << " | |\n";
+      }
+      continue;
+    }
     for(std::size_t k : proxies) {
       Run runs[3];
       for(std::size_t r = 0; r < repeats; ++r)
@@ -175,6 +222,7 @@ try {
       std::cout << std::flush;
     }
   }
+  if(symmetrization_cost) return EXIT_SUCCESS;
   auto mean = [](const std::vector<double>& v) {
     double s = 0.;
     for(double x : v) s += x;
