@@ -6,7 +6,8 @@
 // output of symmetric_approximate_triangle_mesh is mirror-matched (reflected vertices land on
 // output vertices to 1e-6 of the diagonal, reflected triangles are output triangles), with the
 // plane through mesh vertices or across faces (split), with several planes and with the
-// strongest plane only; without planes its error is that of CGAL's VSA; outputs are valid
+// strongest plane only; with the two sides tessellated differently, the output stays nearly
+// symmetric; without planes its error is that of CGAL's VSA; outputs are valid
 // triangle meshes, closed where the input is (the holes left by removed folds are filled); runs
 // are deterministic; Surface_mesh and Polyhedron_3 agree; the metrics
 // measure what they claim; bad input is rejected.
@@ -20,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/boost/graph/generators.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -258,6 +260,27 @@ TEST(SymmetricRemeshing, PlainVsaLosesMirrorMatchOnTheSameShape)
   EXPECT_LT(m.vertices, 0.9);
 }
 
+TEST(SymmetricRemeshing, DifferentTessellationsOfTheTwoSidesStillGiveSymmetricBoundaries)
+{
+  // Symmetric in geometry, not in tessellation: isotropic remeshing tessellates the two sides of
+  // the bumpy sphere differently, so the flooding puts patch boundaries on different faces of the
+  // two sides. Relabelling the faces of one side after their mirror faces puts them back in step:
+  // mean symmetry error of the output over 20 to 80 proxies 0.61e-3 of the diagonal with that
+  // step, 0.79e-3 without it.
+  Surface_mesh mesh = bumpy_sphere<Surface_mesh>(Vector_3(1, 0, 0));
+  CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(mesh), 0.08, mesh, CGAL::parameters::number_of_iterations(3));
+  const Plane_3 plane(1, 0, 0, 0);
+  const double diagonal = diagonal_of(mesh);
+  ASSERT_LT(ST::symmetry_error(mesh, plane), 2e-4 * diagonal) << "the input should be symmetric in geometry";
+  double sum = 0.;
+  for(std::size_t k : {20u, 30u, 50u, 80u}) {
+    const double e = ST::symmetry_error(mesh_of(remesh(mesh, {plane}, CGAL::parameters::max_number_of_proxies(k))), plane);
+    std::cout << "  K = " << k << ": symmetry error " << 1e3 * e / diagonal << "e-3 of the diagonal\n";
+    sum += e / diagonal;
+  }
+  EXPECT_LT(sum / 4., 0.7e-3);
+}
+
 TEST(SymmetricRemeshing, WithoutPlanesErrorIsWithinTenPercentOfCgalVsa)
 {
   // An asymmetric bumpy sphere, K = 30, 60: the same settings (the L21 metric, position_weight 0;
@@ -460,3 +483,4 @@ TEST(SymmetricRemeshing, BadInputIsRejected)
 }
 
 } // namespace
+

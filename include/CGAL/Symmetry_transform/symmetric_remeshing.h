@@ -112,6 +112,13 @@ Lloyd iterations then alternate:
   worst region) and of patches (a patch of less than 5% of its proxy's largest patch is closed
   for one iteration).
 
+After the last iteration, the patch boundaries of the two sides of each plane are put in step:
+the order of the flooding leaves them a face apart here and there, even on a nearly symmetric
+mesh, and so also the junctions where the output's anchors go. A face on the negative side of a
+plane takes the mirrored patch of its mirror face, where it lies next to that patch and fits it
+about as well as its own patch (the flooding's rule); a patch cut in pieces by this keeps its
+largest piece.
+
 The error of a face \f$ t \f$ for a patch of proxy \f$ P \f$ is
 \f$ E = a_t \left( \alpha \|c_t - c_P\|^2 / A_{avg} + (1 - \alpha) \|n_t - n_P\|^2 \right) \f$,
 with \f$ c \f$ the centroids, \f$ n \f$ the unit normals (the proxy's moved by the patch's

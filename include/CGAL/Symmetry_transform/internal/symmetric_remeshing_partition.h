@@ -20,6 +20,13 @@
 // of the identity or of that plane does not grow across the plane: its mirrored patch takes over
 // there, so that a proxy spanning the plane is cut along it into two mirrored patches.
 //
+// Mirror-consistent boundaries, after the last iteration: the flooding order decides where a
+// boundary runs on each side of a plane, so on a nearly symmetric mesh the two sides' boundaries,
+// and the junctions where the output's anchors go, still differ by a face here and there. A face
+// on the negative side of a plane then takes the mirror of its mirror face's patch, if it lies
+// next to that patch and fits it about as well as its own (the flooding's rule); a patch cut in
+// pieces by this keeps its largest piece and gives the others to neighbouring patches.
+//
 // Metric (thesis, "Error Metric"): E(t, P) = a_t (alpha |c_t - c_P|^2 / A_avg + (1 - alpha)
 // |n_t - n_P|^2), with c and n centroids and unit normals, P's parameters moved by the patch's
 // transform, a_t the area of t and A_avg the mean face area: the area-weighted form of the
@@ -149,6 +156,10 @@ public:
       iterate();
     }
     if(s_.verbose) std::cerr << "  " << s_.number_of_iterations << " iterations: error " << total_error() << "\n";
+    if(k_ > 0 && mirror_boundaries() > 0) {
+      reconnect_patches();
+      fit();
+    }
   }
 
 private:
@@ -222,12 +233,14 @@ private:
   bool can_join(std::size_t f, std::size_t label) const
   {
     if(disabled_[label]) return false;
-    if(patch_faces_[label] == 0) return true;
-    for(int i = 0; i < 3; ++i) {
-      const std::size_t g = neighbor_[3 * f + i];
-      if(g != none && label_[g] == label) return true;
-    }
-    return false;
+    return patch_faces_[label] == 0 || next_to(f, label);
+  }
+
+  // Whether an error `e` of face f for a mirrored patch is about that of the face it mirrors
+  // (`reference`): on an exactly symmetric mesh it always is.
+  bool fits_about_as_well(std::size_t f, double e, double reference) const
+  {
+    return e <= 2. * reference + 0.01 * face_[f].a;
   }
 
   void assign(std::size_t f, std::size_t label)
@@ -265,7 +278,7 @@ private:
         if(!can_join(mf, ml)) continue;
         const double me = error(mf, ml);
         if(e < 0.) e = error(g, l);
-        if(me <= 2. * e + 0.01 * face_[mf].a)
+        if(fits_about_as_well(mf, me, e))
           stack_.push_back({me, std::uint32_t(mf), std::uint32_t(ml)});
         else if(me <= best_[mf]) {
           best_[mf] = me;
@@ -306,6 +319,13 @@ private:
       assign(next, p * t_);
       flood();
     }
+    join_neighbouring_patches();
+  }
+
+  // Unlabelled faces join a neighbouring patch (those of a component with none, patch 0).
+  void join_neighbouring_patches()
+  {
+    const std::size_t nf = m_.number_of_faces();
     for(bool changed = true; changed;) {
       changed = false;
       for(std::size_t f = 0; f < nf; ++f) {
@@ -325,6 +345,79 @@ private:
         label_[f] = 0;
         ++patch_faces_[0];
       }
+  }
+
+  // Faces of the negative side of each plane relabelled after their mirror faces (see the top
+  // of the file), in sweeps until none changes; returns how many changed.
+  std::size_t mirror_boundaries()
+  {
+    const std::size_t nf = m_.number_of_faces();
+    std::size_t changed = 0;
+    for(std::size_t j = 0; j < k_; ++j)
+      for(std::size_t sweep = 0, before = ~std::size_t(0); sweep < 10 && changed != before; ++sweep) {
+        before = changed;
+        for(std::size_t f = 0; f < nf; ++f) {
+          const std::size_t mf = mirror_[f * k_ + j];
+          if(mf == none || signed_distance(s_.planes[j], m_.centroid[f]) >= 0.) continue;
+          const std::size_t ml = label_[mf], i = ml % t_;
+          if(i != 0 && i != j + 1) continue;
+          const std::size_t target = ml - i + (i == 0 ? j + 1 : 0);
+          if(label_[f] == target || disabled_[target] || !next_to(f, target) ||
+             !fits_about_as_well(f, error(f, target), error(f, label_[f])))
+            continue;
+          --patch_faces_[label_[f]];
+          label_[f] = target;
+          ++patch_faces_[target];
+          ++changed;
+        }
+      }
+    return changed;
+  }
+
+  bool next_to(std::size_t f, std::size_t label) const
+  {
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t g = neighbor_[3 * f + i];
+      if(g != none && label_[g] == label) return true;
+    }
+    return false;
+  }
+
+  // Each patch connected: the faces of all but its largest piece join neighbouring patches.
+  void reconnect_patches()
+  {
+    const std::size_t nf = m_.number_of_faces();
+    std::vector<std::size_t> piece(nf, none), stack;
+    std::vector<double> piece_area;
+    for(std::size_t f = 0; f < nf; ++f) {
+      if(piece[f] != none) continue;
+      piece[f] = piece_area.size();
+      piece_area.push_back(0.);
+      stack.assign(1, f);
+      while(!stack.empty()) {
+        const std::size_t g = stack.back();
+        stack.pop_back();
+        piece_area.back() += m_.area[g];
+        for(int h = 0; h < 3; ++h) {
+          const std::size_t n = neighbor_[3 * g + h];
+          if(n != none && piece[n] == none && label_[n] == label_[g]) {
+            piece[n] = piece[f];
+            stack.push_back(n);
+          }
+        }
+      }
+    }
+    std::vector<std::size_t> largest(proxies_.size() * t_, none);
+    for(std::size_t f = 0; f < nf; ++f) {
+      std::size_t& l = largest[label_[f]];
+      if(l == none || piece_area[piece[f]] > piece_area[l]) l = piece[f];
+    }
+    for(std::size_t f = 0; f < nf; ++f)
+      if(piece[f] != largest[label_[f]]) {
+        --patch_faces_[label_[f]];
+        label_[f] = none;
+      }
+    join_neighbouring_patches();
   }
 
   // Proxy parameters from their faces (area-weighted normal and centroid in the identity frame),
