@@ -348,7 +348,8 @@ private:
   }
 
   // Faces of the negative side of each plane relabelled after their mirror faces (see the top
-  // of the file), in sweeps until none changes; returns how many changed.
+  // of the file), in sweeps until none changes; returns how many changed. A face does not join a
+  // patch across the plane, as in the flooding.
   std::size_t mirror_boundaries()
   {
     const std::size_t nf = m_.number_of_faces();
@@ -362,7 +363,7 @@ private:
           const std::size_t ml = label_[mf], i = ml % t_;
           if(i != 0 && i != j + 1) continue;
           const std::size_t target = ml - i + (i == 0 ? j + 1 : 0);
-          if(label_[f] == target || disabled_[target] || !next_to(f, target) ||
+          if(label_[f] == target || disabled_[target] || !next_to(f, target, std::uint64_t(1) << j) ||
              !fits_about_as_well(f, error(f, target), error(f, label_[f])))
             continue;
           --patch_faces_[label_[f]];
@@ -374,11 +375,13 @@ private:
     return changed;
   }
 
-  bool next_to(std::size_t f, std::size_t label) const
+  // Whether face f shares an edge with the patch, not counting edges on the planes of
+  // `not_across` (a bit per plane).
+  bool next_to(std::size_t f, std::size_t label, std::uint64_t not_across = 0) const
   {
     for(int i = 0; i < 3; ++i) {
       const std::size_t g = neighbor_[3 * f + i];
-      if(g != none && label_[g] == label) return true;
+      if(g != none && label_[g] == label && !(edge_planes_[3 * f + i] & not_across)) return true;
     }
     return false;
   }
