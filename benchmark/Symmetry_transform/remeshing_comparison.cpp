@@ -86,12 +86,10 @@ Mesh mesh_of(Soup s)
   return out;
 }
 
-// The input moved by the fraction t of the way to its symmetrized shape: each vertex x to
-// x + t (s(x) - x), where s(x) = (x + R(q)) / 2 and q is the point of the input nearest to the
-// mirror image R(x). Halfway to its mirror partner is the smallest move that makes a pair
-// symmetric, so these shapes chart the geometric error that a given gain in symmetry costs
-// an output that has no error of its own.
-Mesh partly_symmetrized(const Mesh& mesh, const K::Plane_3& plane, double t)
+// The symmetrized position s(x) = (x + R(q)) / 2 of each vertex x, q the point of the input
+// nearest to the mirror image R(x): halfway to its mirror partner is the smallest move that makes
+// a pair symmetric.
+std::vector<K::Point_3> symmetrized_positions(const Mesh& mesh, const K::Plane_3& plane)
 {
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
   CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
@@ -99,12 +97,21 @@ Mesh partly_symmetrized(const Mesh& mesh, const K::Plane_3& plane, double t)
   const auto reflect = [&](const K::Point_3& p) {
     return p - 2. * (n * (p - CGAL::ORIGIN) + plane.d()) / n.squared_length() * n;
   };
-  Mesh out = mesh;
+  std::vector<K::Point_3> out;
   for(auto v : vertices(mesh)) {
     const K::Point_3& x = mesh.point(v);
-    const K::Point_3 partner = reflect(tree.closest_point(reflect(x)));
-    out.point(v) = x + 0.5 * t * (partner - x);
+    out.push_back(CGAL::midpoint(x, reflect(tree.closest_point(reflect(x)))));
   }
+  return out;
+}
+
+// The input with each vertex moved the fraction t of the way to its symmetrized position: these
+// shapes chart the geometric error that a given gain in symmetry costs an output that has no
+// error of its own.
+Mesh partly_symmetrized(const Mesh& mesh, const std::vector<K::Point_3>& symmetrized, double t)
+{
+  Mesh out = mesh;
+  for(auto v : vertices(mesh)) out.point(v) = mesh.point(v) + t * (symmetrized[std::size_t(v)] - mesh.point(v));
   return out;
 }
 
@@ -171,8 +178,9 @@ try {
               << 1e3 * ST::symmetry_error(mesh, planes.front(), mesh, 0.02 * diagonal, metric_np) / diagonal << " ("
               << 1e3 * ST::symmetry_error(mesh, planes.front(), metric_np) / diagonal << ") | |\n";
     if(symmetrization_cost) {
+      const std::vector<K::Point_3> symmetrized = symmetrized_positions(mesh, planes.front());
       for(double t : {0.25, 0.5, 0.75, 1.}) {
-        const Mesh moved = partly_symmetrized(mesh, planes.front(), t);
+        const Mesh moved = partly_symmetrized(mesh, symmetrized, t);
         std::cout << "| | | | input, " << t << " of the way to symmetric | | " << std::setprecision(2)
                   << 1e3 * ST::approximation_error(mesh, moved, metric_np).rms / diagonal << " | "
                   << 1e3 * ST::symmetry_error(moved, planes.front(), mesh, 0.02 * diagonal, metric_np) / diagonal
