@@ -84,9 +84,9 @@ void transforms(const Mesh& mesh, const std::vector<K::Point_3>& points, const N
   const ST::Reflective_symmetry_transform<K> prst = ST::reflective_symmetry_transform(gedt, np);
   print_hash("PRST Monte Carlo", prst.values());
   const ST::Reflective_symmetry_transform<K> exact =
-    ST::reflective_symmetry_transform(ST::gaussian_distance_transform(mesh, np.grid_resolution(16)),
-                                      np.grid_resolution(16).prst_method(ST::Reflective_symmetry_method::EXACT));
-  print_hash("PRST exact 16", exact.values());
+    ST::reflective_symmetry_transform(ST::gaussian_distance_transform(mesh, np.grid_resolution(20)),
+                                      np.grid_resolution(20).prst_method(ST::Reflective_symmetry_method::EXACT));
+  print_hash("PRST exact 20", exact.values());
   std::ostringstream saved;
   prst.save(saved);
   const std::string bytes = saved.str();

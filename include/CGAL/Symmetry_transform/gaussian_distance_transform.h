@@ -6,10 +6,10 @@
 #define CGAL_SYMMETRY_TRANSFORM_GAUSSIAN_DISTANCE_TRANSFORM_H
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/gaussian_distance_transform_impl.h>
-#include <CGAL/Symmetry_transform/internal/grid_settings.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/grid/gaussian_distance_transform.h>
+#include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 

@@ -7,10 +7,10 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
-#include <CGAL/Symmetry_transform/internal/fft.h>
-#include <CGAL/Symmetry_transform/internal/grid_settings.h>
-#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/fft.h>
+#include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 
 #include <Eigen/Dense>
 

@@ -7,12 +7,12 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
-#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/plane_bins.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_exact.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_io.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_monte_carlo.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/prst/exact.h>
+#include <CGAL/Symmetry_transform/internal/prst/file_format.h>
+#include <CGAL/Symmetry_transform/internal/prst/monte_carlo.h>
 
 #include <algorithm>
 #include <array>

@@ -9,11 +9,11 @@
 // mirror image (symmetry error), both from area-uniform seeded samples and exact closest points
 // (CGAL::AABB_tree).
 
-#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/refinement_samples.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <algorithm>
 #include <cmath>

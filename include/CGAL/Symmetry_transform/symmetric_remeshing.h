@@ -5,14 +5,14 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRIC_REMESHING_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRIC_REMESHING_H
 
-#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_meshing.h>
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mesh.h>
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mirrors.h>
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_partition.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/meshing.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/mirrors.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/partition.h>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>

@@ -5,9 +5,9 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRY_ALIGNMENT_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_ALIGNMENT_H
 
-#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 
 #include <Eigen/Dense>

@@ -8,7 +8,7 @@
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_io.h>
+#include <CGAL/Symmetry_transform/internal/prst/file_format.h>
 
 #include <cmath>
 #include <cstdint>

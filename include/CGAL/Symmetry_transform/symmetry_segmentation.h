@@ -5,7 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRY_SEGMENTATION_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_SEGMENTATION_H
 
-#include <CGAL/Symmetry_transform/internal/symmetry_segmentation_split.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/split.h>
 
 #include <algorithm>
 #include <cstddef>

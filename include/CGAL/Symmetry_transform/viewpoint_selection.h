@@ -5,7 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_VIEWPOINT_SELECTION_H
 #define CGAL_SYMMETRY_TRANSFORM_VIEWPOINT_SELECTION_H
 
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>

@@ -8,7 +8,7 @@
 // Like CGAL's list, it is included several times and therefore has no include guard.
 
 #include_next <CGAL/STL_Extension/internal/parameters_interface.h>
-#include <CGAL/Symmetry_transform/internal/parameters_interface.h>
+#include <CGAL/Symmetry_transform/internal/common/parameters_interface.h>
 
 #ifndef CGAL_SYMMETRY_TRANSFORM_NAMED_PARAMETERS_APPENDED
 #define CGAL_SYMMETRY_TRANSFORM_NAMED_PARAMETERS_APPENDED

@@ -2,16 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_SPLIT_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_SPLIT_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SPLIT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SPLIT_H
 
 // The split of one segment of segment_by_symmetry(): its principal symmetries detected on the
 // segment alone, the faces' supports of each plane as feature vectors, the stopping rule, the
 // fuzzy clustering and graph cut, and the connected parts of the labels. Segments of one level
 // are split in parallel.
 
-#include <CGAL/Symmetry_transform/internal/symmetry_segmentation_clustering.h>
-#include <CGAL/Symmetry_transform/internal/symmetry_segmentation_dual_graph.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/fuzzy_clustering.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
@@ -260,4 +260,4 @@ inline std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_me
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_SPLIT_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SPLIT_H

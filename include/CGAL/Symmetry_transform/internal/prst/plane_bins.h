@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_PLANE_BINS_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_PLANE_BINS_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_PLANE_BINS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_PLANE_BINS_H
 
 // The discretisation of the space of planes (DESIGN.md): a plane is (theta, phi, r), with unit
 // normal n = (sin t cos p, sin t sin p, cos t), t in [0, pi/2], p in [0, 2 pi), and signed
@@ -84,4 +84,4 @@ struct Plane_bins
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PLANE_BINS_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_PLANE_BINS_H

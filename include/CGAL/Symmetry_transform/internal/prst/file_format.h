@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_IO_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_IO_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_FILE_FORMAT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_FILE_FORMAT_H
 
 // Binary file of a reflective symmetry transform:
 //   8 bytes "CGALPRST", uint32 format version, uint32 byte-order mark 0x01020304,
@@ -11,7 +11,7 @@
 //   uint64 FNV-1a hash of all preceding bytes after the magic.
 // Values are written in the machine's byte order; the mark makes a foreign order an error.
 
-#include <CGAL/Symmetry_transform/internal/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 
 #include <cmath>
 #include <cstdint>
@@ -104,4 +104,4 @@ inline void read_reflective_symmetry(std::istream& is, Plane_bins& bins, std::ve
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_IO_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_FILE_FORMAT_H

@@ -2,14 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_GAUSSIAN_DISTANCE_TRANSFORM_IMPL_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_GAUSSIAN_DISTANCE_TRANSFORM_IMPL_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_GAUSSIAN_DISTANCE_TRANSFORM_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_GAUSSIAN_DISTANCE_TRANSFORM_H
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/grid_settings.h>
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
-#include <CGAL/Symmetry_transform/internal/triangle_tree.h>
+#include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -166,4 +166,4 @@ void fill_gaussian_distance_transform_of_points(Voxel_grid<GT>& grid, const std:
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GAUSSIAN_DISTANCE_TRANSFORM_IMPL_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_GAUSSIAN_DISTANCE_TRANSFORM_H

@@ -2,13 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_TRIANGLE_TREE_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_TRIANGLE_TREE_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_TRIANGLE_TREE_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_TRIANGLE_TREE_H
 
 // The AABB tree of the triangles of a shape, for the closest-point searches of the distance
 // transform and of Iterative Symmetric Points.
 
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -77,4 +77,4 @@ typedef CGAL::AABB_tree<Triangle_tree_traits> Triangle_tree;
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_TRIANGLE_TREE_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_TRIANGLE_TREE_H

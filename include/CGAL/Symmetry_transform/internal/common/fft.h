@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_FFT_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_FFT_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_FFT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_FFT_H
 
 // Thin RAII layer over FFTW (double precision): aligned buffers, and plans created under one
 // lock because FFTW's planner is not thread-safe (executing a plan is).
@@ -91,4 +91,4 @@ inline int fft_friendly_size(int n)
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_FFT_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_FFT_H

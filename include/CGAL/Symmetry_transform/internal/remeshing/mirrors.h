@@ -2,15 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MIRRORS_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MIRRORS_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MIRRORS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MIRRORS_H
 
 // Mirror images in the working mesh of symmetric remeshing: the face that mirrors each face
 // through each plane (for the flooding), and the nearest mesh vertex to a point (for the mirror
 // images of anchors), both by Kd-tree queries.
 
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mesh.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -95,4 +95,4 @@ inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std:
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MIRRORS_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MIRRORS_H

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_ITERATIVE_SYMMETRIC_POINTS_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_ITERATIVE_SYMMETRIC_POINTS_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_ITERATIVE_SYMMETRIC_POINTS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_ITERATIVE_SYMMETRIC_POINTS_H
 
 // Iterative Symmetric Points (thesis, section 3.3): samples of the shape are reflected through
 // the current plane and matched to their closest points on the shape; the plane is then
@@ -14,9 +14,9 @@
 // minimises the distance to the match itself (closed form). On a mesh, ISP walks with the
 // approximate matches of a Closest_triangle_field and ends with exact searches in the AABB tree.
 
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
-#include <CGAL/Symmetry_transform/internal/triangle_tree.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
 
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -528,4 +528,4 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ITERATIVE_SYMMETRIC_POINTS_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_ITERATIVE_SYMMETRIC_POINTS_H

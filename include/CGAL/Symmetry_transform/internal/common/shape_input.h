@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SHAPE_INPUT_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SHAPE_INPUT_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SHAPE_INPUT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SHAPE_INPUT_H
 
 // Reading a mesh or a point set into plain double geometry, with the checks of the bad-input
 // contract (DESIGN.md): every public entry point goes through here.
@@ -131,4 +131,4 @@ inline Shape_frame frame_of_points(const std::vector<Dpoint>& points)
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SHAPE_INPUT_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SHAPE_INPUT_H

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MESHING_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MESHING_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MESHING_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MESHING_H
 
 // The output mesh of symmetric remeshing from the patches (thesis, Section 5.1.2, "Point
 // Correspondences" and "Triangulation"), in the steps of CGAL's VSA (extract_mesh):
@@ -28,7 +28,7 @@
 //   that only depend on lengths, invariant under a reflection, so that the fill of a hole and
 //   that of its mirror image are mirror images of each other.
 
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_partition.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/partition.h>
 
 #include <algorithm>
 #include <array>
@@ -650,4 +650,4 @@ private:
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MESHING_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MESHING_H

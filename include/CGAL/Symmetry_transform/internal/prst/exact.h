@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_EXACT_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_EXACT_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_EXACT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_EXACT_H
 
 // The exact (convolution) method: for each normal direction, resample f in a frame whose
 // third axis is the normal; along each column the sums sum_w g(w) g(2r - w) for all offsets r
@@ -11,9 +11,9 @@
 // of the sum of the squared column spectra. O(n^2) directions x O(n^3 log n) each.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/fft.h>
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/common/fft.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 
 #include <cmath>
 #include <vector>
@@ -134,4 +134,4 @@ void exact_reflective_symmetry(const Voxel_grid<GT>& f_samples, const Plane_bins
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_EXACT_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_EXACT_H

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_CLUSTERING_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_CLUSTERING_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_FUZZY_CLUSTERING_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_FUZZY_CLUSTERING_H
 
 // One split of a segment, as Katz and Tal split a mesh: the faces' feature vectors are clustered
 // into two fuzzy clusters (area-weighted k-means, seeded k-means++ starts, then fuzzy c-means with
@@ -11,7 +11,7 @@
 // graph cut on the dual graph (CGAL::alpha_expansion_graphcut) turns the memberships into labels
 // whose boundary is short and follows concave creases. Plain doubles and Eigen throughout.
 
-#include <CGAL/Symmetry_transform/internal/symmetry_segmentation_dual_graph.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
@@ -194,4 +194,4 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_CLUSTERING_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_FUZZY_CLUSTERING_H

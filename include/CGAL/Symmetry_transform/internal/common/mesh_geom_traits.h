@@ -2,11 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_MESH_GEOM_TRAITS_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_MESH_GEOM_TRAITS_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_MESH_GEOM_TRAITS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_MESH_GEOM_TRAITS_H
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 
 namespace CGAL {
 namespace Symmetry_transform {
@@ -29,4 +29,4 @@ struct Mesh_geom_traits<Voxel_grid<GT>, NamedParameters>
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_MESH_GEOM_TRAITS_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_MESH_GEOM_TRAITS_H

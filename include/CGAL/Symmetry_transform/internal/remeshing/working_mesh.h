@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MESH_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MESH_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_WORKING_MESH_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_WORKING_MESH_H
 
 // The working mesh of symmetric remeshing: an indexed triangle soup in double precision with
 // its faces that cross a plane of symmetry split there (thesis, Section 5.1.2, "Proxies Spanning
@@ -11,8 +11,8 @@
 // algorithm works on plain arrays for speed; the public layer converts from and to the user's
 // mesh and kernel.
 
-#include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -168,4 +168,4 @@ struct Remeshing_mesh
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_MESH_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_WORKING_MESH_H

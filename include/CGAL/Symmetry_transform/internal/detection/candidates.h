@@ -2,15 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRINCIPAL_SYMMETRIES_IMPL_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRINCIPAL_SYMMETRIES_IMPL_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_CANDIDATES_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_CANDIDATES_H
 
 // Candidates of principal symmetries among the local maxima of a discrete PRST (thesis,
 // section 3.3; thresholds of DESIGN.md), their refinement, and the merging of duplicates.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
-#include <CGAL/Symmetry_transform/internal/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
 #include <algorithm>
@@ -111,4 +111,4 @@ bool stays_near_bin(const Reflective_symmetry_transform<GT>& prst, const Dplane&
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRINCIPAL_SYMMETRIES_IMPL_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_CANDIDATES_H

@@ -2,16 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_DUAL_GRAPH_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_DUAL_GRAPH_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_DUAL_GRAPH_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_DUAL_GRAPH_H
 
 // The faces of a mesh as indices 0..n-1 (in the order of faces(tm)), their geometry in double
 // precision, and the dual graph of the segmentation: one edge per pair of faces sharing a mesh
 // edge, with its length and the Katz-Tal angular distance of the two faces. Connected parts of
 // sets of faces, and a set of faces copied into a mesh of its own (a segment's sub-mesh).
 
-#include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -189,4 +189,4 @@ inline std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, 
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRY_SEGMENTATION_DUAL_GRAPH_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_DUAL_GRAPH_H

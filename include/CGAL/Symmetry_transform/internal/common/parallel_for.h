@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_PARALLEL_FOR_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_PARALLEL_FOR_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H
 
 #include <algorithm>
 #include <cstddef>
@@ -50,4 +50,4 @@ void parallel_for(std::size_t count, unsigned threads, const Body& body)
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PARALLEL_FOR_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H

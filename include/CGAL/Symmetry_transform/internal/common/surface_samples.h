@@ -2,15 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFINEMENT_SAMPLES_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFINEMENT_SAMPLES_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SURFACE_SAMPLES_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SURFACE_SAMPLES_H
 
 // The samples that Iterative Symmetric Points reflects (and that the remeshing metrics measure
 // distances from): area-uniform on a mesh, a random subset of a point set, from the seed alone.
 
-#include <CGAL/Symmetry_transform/internal/iterative_symmetric_points.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Random.h>
@@ -75,4 +75,4 @@ std::vector<Eigen::Vector3d> point_samples(const std::vector<Dpoint>& points, co
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFINEMENT_SAMPLES_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SURFACE_SAMPLES_H

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_MONTE_CARLO_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_MONTE_CARLO_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_MONTE_CARLO_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_MONTE_CARLO_H
 
 // Monte Carlo estimation of the bin averages of SM(plane) = int f(x) f(g(x)) dx / int f^2,
 // with x drawn with probability proportional to f (alias table over the voxels, uniform
@@ -12,9 +12,9 @@
 // so that results depend on the seed and the number of threads only.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/plane_bins.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_exact.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/prst/exact.h>
 
 #include <boost/random/discrete_distribution.hpp>
 #include <boost/random/mersenne_twister.hpp>
@@ -296,4 +296,4 @@ private:
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REFLECTIVE_SYMMETRY_MONTE_CARLO_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_MONTE_CARLO_H

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 
-#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_PARTITION_H
-#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_PARTITION_H
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PARTITION_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PARTITION_H
 
 // Symmetric proxy generation (thesis, Section 5.1.2): Lloyd iterations of Variational Shape
 // Approximation where a proxy is a plane with up to one connected patch per transform (the
@@ -32,8 +32,8 @@
 // transform, a_t the area of t and A_avg the mean face area: the area-weighted form of the
 // thesis's metric, which is L2,1 (CGAL's default) for alpha = 0.
 
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mesh.h>
-#include <CGAL/Symmetry_transform/internal/symmetric_remeshing_mirrors.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/mirrors.h>
 
 #include <CGAL/Random.h>
 #include <CGAL/Variational_shape_approximation.h>
@@ -702,4 +702,4 @@ private:
 } // namespace Symmetry_transform
 } // namespace CGAL
 
-#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIC_REMESHING_PARTITION_H
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PARTITION_H

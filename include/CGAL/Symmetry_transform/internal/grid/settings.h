@@ -5,9 +5,9 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H
 
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <cmath>
 #include <cstddef>
