@@ -168,6 +168,7 @@ void remeshing_and_segmentation(const Mesh& mesh, const NP& np)
   for(Mesh::Face_index f : faces(mesh)) ids.push_back(get(segment, f));
   std::printf("segments: %zu, tree of %zu\n", count, tree.segments.size());
   print_hash("segment ids", ids);
+  for(const auto& segment : tree.segments) print_symmetries("segment plane", segment.planes);
 }
 
 } // namespace

@@ -88,9 +88,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
   using parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
 
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, vpm), np);
+  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, np), np);
 }
 
 /*!

@@ -5,14 +5,9 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_PRINCIPAL_SYMMETRIES_H
 #define CGAL_SYMMETRY_TRANSFORM_PRINCIPAL_SYMMETRIES_H
 
+#include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
-#include <CGAL/Symmetry_transform/internal/grid/settings.h>
-#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
-#include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/detection/candidates.h>
-#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/detection/detection.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 
@@ -27,202 +22,6 @@
 namespace CGAL {
 namespace Symmetry_transform {
 
-/*!
-\ingroup PkgSymmetryTransformRef
-A principal symmetry of a shape: a local maximum of its reflective symmetry transform,
-refined to high precision.
-\tparam GeomTraits a model of `Kernel`
-*/
-template <typename GeomTraits>
-struct Principal_symmetry
-{
-  /// The plane of reflection, with a unit normal.
-  typename GeomTraits::Plane_3 plane;
-  /// Its symmetry measure in \f$ [0,1] \f$, evaluated on the Gaussian distance transform by `symmetry_measure()`.
-  double symmetry;
-  /// The fraction of the shape (of its area for a mesh, of its points for a point set) that the
-  /// reflection maps onto the shape: the mean Gaussian weight \f$ \exp(-d^2/2\sigma^2) \f$ of the
-  /// distance \f$ d \f$ from a reflected sample to the shape.
-  double support;
-};
-
-namespace internal {
-
-template <typename GT>
-typename GT::Plane_3 to_plane(const Dplane& p)
-{
-  return typename GT::Plane_3(p.normal[0], p.normal[1], p.normal[2], -p.offset);
-}
-
-
-// ISP settings from the named parameters; the GEDT of the shape tells which points lie beyond
-// its 3 sigma band.
-template <typename GT, typename NamedParameters>
-Isp_settings isp_settings(const NamedParameters& np, const Voxel_grid<GT>& gedt)
-{
-  const Grid_settings grid = grid_settings(np, gedt.radius());
-  Isp_settings settings;
-  settings.sigma = grid.sigma();
-  settings.radius = gedt.radius();
-  settings.max_iterations =
-    unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_iterations), 20));
-  settings.threads = grid.threads;
-  settings.beyond_band = [&gedt](const Eigen::Vector3d& p) { return gedt.trilinear_value(p.x(), p.y(), p.z()) == 0.; };
-  return settings;
-}
-
-// The PRST of a detection. Its maxima need only be located to a bin or two, ISP doing the
-// rest: 5e5 Monte Carlo samples suffice (a quarter of the transform's default) unless the
-// user chose a number.
-template <typename GT, typename NamedParameters>
-Reflective_symmetry_transform<GT> detection_transform(const Voxel_grid<GT>& gedt, const NamedParameters& np)
-{
-  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::number_of_samples_t>::value)
-    return reflective_symmetry_transform(gedt, np.number_of_samples(500000));
-  else
-    return reflective_symmetry_transform(gedt, np);
-}
-
-// A triangle surface ready for refinement: its GEDT, the AABB tree of its triangles, and the
-// closest triangle of each voxel of the GEDT's band (recorded with the GEDT) for the walk of ISP.
-// Built in place: the tree and the field refer to the triangles.
-template <typename GT>
-class Triangle_surface
-{
-  std::vector<std::int32_t> closest_triangles_; // moved into the field
-
-public:
-  const std::vector<Dtriangle> triangles;
-  const Voxel_grid<GT> gedt;
-  const Triangle_matcher matcher;
-  const Closest_triangle_field field;
-
-  template <typename NamedParameters>
-  Triangle_surface(std::vector<Dtriangle> surface_triangles, const NamedParameters& np)
-    : triangles(std::move(surface_triangles)),
-      gedt(gaussian_distance_transform_of_triangles<GT>(triangles, np, &closest_triangles_)), matcher(triangles),
-      field(triangles, matcher, std::move(closest_triangles_), gedt.origin(), gedt.voxel_size(), gedt.resolution())
-  {}
-  Triangle_surface(const Triangle_surface&) = delete;
-  Triangle_surface& operator=(const Triangle_surface&) = delete;
-};
-
-// Candidates of the PRST refined by ISP (walking with `walk_matcher` if given), kept if they
-// stay near their bin, measured on the GEDT, merged when equal, strongest first.
-template <typename GT, typename Matcher, typename NamedParameters, typename Walk_matcher = Matcher>
-std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt,
-                                                      const Reflective_symmetry_transform<GT>& prst,
-                                                      const std::vector<Eigen::Vector3d>& samples,
-                                                      const Matcher& matcher, const NamedParameters& np,
-                                                      const Walk_matcher* walk_matcher = nullptr)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const std::size_t max_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), 10));
-  const double t = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), 0.1));
-  const double l = double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), 0.1));
-  const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
-  const Isp_settings settings = isp_settings(np, gedt);
-
-  // Candidates on one ridge of the transform converge to the same plane: the cheap coarse phase
-  // of ISP tells them apart, and only the first of each gets the fine phase.
-  std::vector<Dplane> accepted; // the coarse and the refined plane of each accepted candidate
-  std::vector<Principal_symmetry<GT>> result;
-  const double angle = prst.bins().theta_step(), distance = prst.bins().offset_step();
-  const Eigen::Vector3d center = center_of(prst.bins());
-  // The thesis drops a candidate that leaves its bin: an unstable maximum. Monte Carlo noise
-  // and the smoothing move maxima along flat ridges by a few bins, hence a reach of 3 bins.
-  constexpr long unstable_reach = 3;
-  std::vector<std::array<std::size_t, 3>> candidates = symmetry_candidates(prst, t, l);
-  // Most candidates are dropped as duplicates or unstable; beyond a few per plane asked for, the
-  // weaker ones would be cut off anyway.
-  if(candidates.size() > 10 * max_planes) candidates.resize(10 * max_planes);
-  for(const auto& bin : candidates) {
-    if(result.size() == max_planes) break;
-    const auto start = std::chrono::steady_clock::now();
-    auto near_accepted = [&](const Dplane& plane, double factor) {
-      return std::any_of(accepted.begin(), accepted.end(),
-                         [&](const Dplane& p) { return same_plane(p, plane, factor * angle, factor * distance, center); });
-    };
-    // Stop refining as soon as the plane heads for an accepted one or out of reach of its bin.
-    auto abandon = [&](const Dplane& plane) {
-      return near_accepted(plane, 2.) || !stays_near_bin(prst, plane, bin, unstable_reach);
-    };
-    const Isp_result coarse = iterative_symmetric_points(samples, to_dplane(prst.plane(bin)), matcher, settings,
-                                                         Isp_phase::COARSE, abandon, walk_matcher);
-    // The coarse phase stops within about a bin of the optimum: closer than two bins to an
-    // accepted plane, the fine phase would only find that plane again.
-    // A start that the coarse phase cannot settle is on a slope or a ridge, not near a maximum;
-    // with no normals (a point set), the point-to-point fit creeps and needs the fine phase.
-    const bool seen = near_accepted(coarse.plane, 2.), settled = coarse.converged || !Matcher::has_normals;
-    Isp_result refined = coarse;
-    if(!seen && settled)
-      refined = iterative_symmetric_points(samples, coarse.plane, matcher, settings, Isp_phase::FINE, abandon, walk_matcher);
-    const char* verdict = seen || near_accepted(refined.plane, 2.)              ? "same as an accepted plane"
-                          : !stays_near_bin(prst, refined.plane, bin, unstable_reach) ? "left its bin"
-                          : !settled || !(refined.support > 0.)                      ? "no convergence"
-                                                                                     : nullptr;
-    if(verbose)
-      std::cerr << "  candidate (" << bin[0] << "," << bin[1] << "," << bin[2] << ") SM " << prst.value(bin)
-                << ": ISP " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                << " s (" << coarse.iterations << " + " << (seen || !settled ? 0u : refined.iterations)
-                << " iterations), support " << refined.support << (verdict ? ", dropped: " : ", accepted") << (verdict ? verdict : "")
-                << "\n";
-    if(verdict != nullptr) continue;
-    accepted.push_back(coarse.plane);
-    accepted.push_back(refined.plane);
-    const typename GT::Plane_3 plane = to_plane<GT>(refined.plane);
-    result.push_back({plane, symmetry_measure(gedt, plane), refined.support});
-  }
-  std::stable_sort(result.begin(), result.end(),
-                   [](const Principal_symmetry<GT>& a, const Principal_symmetry<GT>& b) { return a.symmetry > b.symmetry; });
-  if(result.size() > max_planes) result.resize(max_planes);
-  return result;
-}
-
-// A detection and the transform it started from (the symmetry frame searches the transform too).
-template <typename GT>
-struct Detection
-{
-  std::vector<Principal_symmetry<GT>> symmetries;
-  Reflective_symmetry_transform<GT> prst;
-};
-
-template <typename GT, typename NamedParameters>
-Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const NamedParameters& np)
-{
-  Reflective_symmetry_transform<GT> prst = detection_transform(surface.gedt, np);
-  std::vector<Principal_symmetry<GT>> symmetries = refine_candidates(
-    surface.gedt, prst, surface_samples(surface.triangles, np), surface.matcher, np, &surface.field);
-  return {std::move(symmetries), std::move(prst)};
-}
-
-template <typename TriangleMesh, typename NamedParameters>
-Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detection_of_mesh(const TriangleMesh& tm,
-                                                                                          const NamedParameters& np)
-{
-  typedef typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  const Triangle_surface<GT> surface(triangles_of_mesh(tm, vpm), np);
-  return detection_of_surface(surface, np);
-}
-
-template <typename PointRange, typename NamedParameters>
-Detection<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
-detection_of_points(const PointRange& points, const NamedParameters& np)
-{
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits GT;
-  const std::vector<Dpoint> samples = points_of_range(points, NP_helper::get_const_point_map(points, np));
-  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points(points, np);
-  Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
-  const Point_matcher matcher(samples);
-  std::vector<Principal_symmetry<GT>> symmetries = refine_candidates(gedt, prst, point_samples(samples, np), matcher, np);
-  return {std::move(symmetries), std::move(prst)};
-}
-
-} // namespace internal
 
 /*!
 \ingroup PkgSymmetryTransformRef
@@ -304,10 +103,8 @@ principal_symmetries(
   const Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>& prst,
   const NamedParameters& np = parameters::default_values())
 {
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, vpm), np);
+  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
   return internal::refine_candidates(surface.gedt, prst, internal::surface_samples(surface.triangles, np),
                                      surface.matcher, np, &surface.field);
 }
@@ -372,9 +169,7 @@ refine_symmetry_plane(const TriangleMesh& tm,
                       const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, vpm), np);
+  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
   const internal::Isp_settings settings = internal::isp_settings(np, surface.gedt);
   return internal::to_plane<GT>(internal::iterative_symmetric_points(internal::surface_samples(surface.triangles, np),
                                                                      internal::to_dplane(plane), surface.matcher,
@@ -406,9 +201,8 @@ double symmetry_support(const TriangleMesh& tm,
                         const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3& plane,
                         FaceSupportMap face_support_map, const NamedParameters& np = parameters::default_values())
 {
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
+  const auto vpm = internal::vertex_point_map(tm, np);
+  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, np);
   const internal::Triangle_matcher matcher(triangles);
   const internal::Grid_settings grid = internal::grid_settings(np, internal::frame_of_triangles(triangles).radius);
   const internal::Dplane mirror = internal::to_dplane(plane);

@@ -5,9 +5,11 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H
 #define CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 #include <CGAL/Symmetry_transform/internal/prst/exact.h>
@@ -277,11 +279,9 @@ public:
 private:
   std::array<double, 3> coordinates(const Plane_3& plane) const
   {
-    const double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()), c = CGAL::to_double(plane.c());
-    const double length = std::sqrt(a * a + b * b + c * c);
-    if(!(length > 0.)) throw std::invalid_argument("Reflective_symmetry_transform: degenerate plane");
+    const internal::Dplane p = internal::to_dplane(plane);
     std::array<double, 3> u;
-    if(!bins_.coordinates({a / length, b / length, c / length}, -CGAL::to_double(plane.d()) / length, u))
+    if(!bins_.coordinates({p.normal[0], p.normal[1], p.normal[2]}, p.offset, u))
       throw std::invalid_argument("Reflective_symmetry_transform: the plane is farther than the radius from the centre");
     return u;
   }
@@ -352,10 +352,10 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   using parameters::get_parameter;
   const Reflective_symmetry_method method =
     choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
-  const std::size_t pairs = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), 2000000));
+  const std::size_t pairs = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), internal::defaults::monte_carlo_pairs));
   const Monte_carlo_estimator estimator =
     choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
-  const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), 0u));
+  const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), internal::defaults::random_seed));
   const unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
                                                      internal::default_number_of_threads()));
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);

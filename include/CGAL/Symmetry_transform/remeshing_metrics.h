@@ -9,6 +9,7 @@
 // mirror image (symmetry error), both from area-uniform seeded samples and exact closest points
 // (CGAL::AABB_tree).
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
@@ -83,17 +84,15 @@ Soup_defects soup_defects(std::size_t number_of_points, const std::vector<Triang
 template <typename TriangleMesh, typename NamedParameters>
 std::vector<Dtriangle> metric_triangles(const TriangleMesh& tm, const NamedParameters& np)
 {
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  return triangles_of_mesh(tm, vpm);
+  return triangles_of_mesh(tm, np);
 }
 
 template <typename NamedParameters>
 std::vector<Eigen::Vector3d> metric_samples(const std::vector<Dtriangle>& triangles, const NamedParameters& np)
 {
   const std::size_t count = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_points_on_faces),
-                                                         std::size_t(20000));
-  const unsigned seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
+                                                         internal::defaults::metric_samples);
+  const unsigned seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), internal::defaults::random_seed);
   return surface_samples(triangles, parameters::number_of_refinement_samples(count).random_seed(seed));
 }
 
@@ -238,9 +237,8 @@ double face_symmetry_errors(const TriangleMesh& tm,
                             FaceErrorMap face_error_map, const NamedParameters& np = parameters::default_values())
 {
   const internal::Dplane mirror = internal::to_dplane(plane);
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, vpm);
+  const auto vpm = internal::vertex_point_map(tm, np);
+  const std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, np);
   std::vector<Eigen::Vector3d> centroids;
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> face_list;
   for(auto f : faces(tm)) {

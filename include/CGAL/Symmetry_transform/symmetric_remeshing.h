@@ -5,6 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRIC_REMESHING_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRIC_REMESHING_H
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
@@ -34,16 +35,6 @@ namespace CGAL {
 namespace Symmetry_transform {
 
 namespace internal {
-
-template <typename Plane>
-Dplane remeshing_plane(const Plane& plane)
-{
-  const Eigen::Vector3d n(CGAL::to_double(plane.a()), CGAL::to_double(plane.b()), CGAL::to_double(plane.c()));
-  const double length = n.norm(), d = CGAL::to_double(plane.d());
-  if(!(length > 0.) || !std::isfinite(length) || !std::isfinite(d))
-    throw std::invalid_argument("Symmetry_transform: a plane of symmetry is degenerate (zero or non-finite normal)");
-  return Dplane{n / length, -d / length};
-}
 
 // Builds `out` (a MutableFaceGraph) from the anchors and triangles; a soup that is not a
 // polygon mesh is oriented first (non-manifold vertices duplicated).
@@ -287,32 +278,32 @@ bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRang
   const auto start = std::chrono::steady_clock::now();
   auto seconds = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm));
+  const auto vpm = internal::vertex_point_map(tm, np);
   internal::Remeshing_settings settings;
-  for(const auto& plane : planes) settings.planes.push_back(internal::remeshing_plane(plane));
+  for(const auto& plane : planes) settings.planes.push_back(internal::to_dplane(plane));
   if(settings.planes.size() > 64) throw std::invalid_argument("Symmetry_transform: at most 64 planes of symmetry");
   settings.max_number_of_proxies = choose_parameter(get_parameter(np, internal_np::max_number_of_proxies), std::size_t(0));
   if(!is_default_parameter<NamedParameters, internal_np::max_number_of_proxies_t>::value && settings.max_number_of_proxies == 0)
     throw std::invalid_argument("Symmetry_transform: max_number_of_proxies must be positive");
   settings.min_error_drop = choose_parameter(get_parameter(np, internal_np::min_error_drop), 0.);
-  settings.number_of_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), std::size_t(20));
-  settings.number_of_relaxations = choose_parameter(get_parameter(np, internal_np::number_of_relaxations), std::size_t(5));
+  settings.number_of_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), internal::defaults::remeshing_iterations);
+  settings.number_of_relaxations = choose_parameter(get_parameter(np, internal_np::number_of_relaxations), internal::defaults::remeshing_relaxations);
   settings.seeding = choose_parameter(get_parameter(np, internal_np::seeding_method), Surface_mesh_approximation::HIERARCHICAL);
-  settings.position_weight = choose_parameter(get_parameter(np, internal_np::st_position_weight), 0.002);
+  settings.position_weight = choose_parameter(get_parameter(np, internal_np::st_position_weight), internal::defaults::position_weight);
   if(!(settings.position_weight >= 0. && settings.position_weight <= 1.))
     throw std::invalid_argument("Symmetry_transform: position_weight must lie in [0,1]");
   settings.strongest_plane_only = choose_parameter(get_parameter(np, internal_np::st_strongest_plane_only), false);
-  settings.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), 0u);
+  settings.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), internal::defaults::random_seed);
   settings.threads = choose_parameter(get_parameter(np, internal_np::st_number_of_threads), internal::default_number_of_threads());
   settings.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   internal::Meshing_settings meshing;
-  meshing.subdivision_ratio = choose_parameter(get_parameter(np, internal_np::subdivision_ratio), 5.);
+  meshing.subdivision_ratio = choose_parameter(get_parameter(np, internal_np::subdivision_ratio), internal::defaults::subdivision_ratio);
   meshing.relative_to_chord = choose_parameter(get_parameter(np, internal_np::relative_to_chord), false);
   meshing.with_dihedral_angle = choose_parameter(get_parameter(np, internal_np::with_dihedral_angle), false);
   meshing.optimize_anchor_location = choose_parameter(get_parameter(np, internal_np::optimize_anchor_location), true);
 
   // Input checks (empty mesh, non-triangle faces, non-finite or all degenerate), then the working mesh.
-  internal::triangles_of_mesh(tm, vpm);
+  internal::triangles_of_mesh(tm, np);
   Mesh m;
   std::unordered_map<vertex_descriptor, std::size_t> index;
   for(vertex_descriptor v : vertices(tm)) {
@@ -385,7 +376,7 @@ bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRang
   // Nearest working vertex to a point.
   std::optional<internal::Nearest_point> nearest;
   if(!settings.planes.empty()) nearest.emplace(m.points);
-  auto nearest_vertex = [&nearest](const Eigen::Vector3d& p) { return nearest ? (*nearest)(p).first : Mesh::none; };
+  auto nearest_vertex = [&nearest](const Eigen::Vector3d& p) { return nearest ? (*nearest)(p).index : Mesh::none; };
   internal::Symmetric_meshing extraction(m, partition, settings.planes, vertex_planes, nearest_vertex);
   internal::Remeshing_output out = extraction.run(meshing);
   if(settings.verbose)

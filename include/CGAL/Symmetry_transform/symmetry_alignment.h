@@ -275,17 +275,15 @@ template <typename GT>
 Symmetry_frame<GT> to_symmetry_frame(const Eigen_frame& f)
 {
   Symmetry_frame<GT> result;
-  result.center = typename GT::Point_3(f.center.x(), f.center.y(), f.center.z());
-  for(int i = 0; i < 3; ++i) result.axes[std::size_t(i)] = typename GT::Vector_3(f.axes[i].x(), f.axes[i].y(), f.axes[i].z());
+  result.center = to_point<GT>(f.center);
+  for(std::size_t i = 0; i < 3; ++i) result.axes[i] = to_vector<GT>(f.axes[i]);
   return result;
 }
 
 template <typename TriangleMesh, typename NamedParameters>
 Mass_distribution mass_of_mesh(const TriangleMesh& tm, const NamedParameters& np)
 {
-  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, tm));
-  return Mass_distribution(triangles_of_mesh(tm, vpm));
+  return Mass_distribution(triangles_of_mesh(tm, np));
 }
 
 template <typename PointRange, typename NamedParameters>

@@ -5,6 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRY_DESCRIPTOR_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_DESCRIPTOR_H
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
@@ -230,7 +231,7 @@ void check_same_resolution(const Symmetry_descriptor<GT>& a, const Symmetry_desc
 template <typename NamedParameters>
 auto descriptor_parameters(const NamedParameters& np)
 {
-  const int n = int(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_grid_resolution), 32));
+  const int n = int(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_grid_resolution), internal::defaults::descriptor_grid_resolution));
   return np.grid_resolution(n);
 }
 

@@ -5,6 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRY_SEGMENTATION_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_SEGMENTATION_H
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/split.h>
 
 #include <algorithm>
@@ -229,18 +230,17 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   typedef Symmetry_segment<GT> Segment;
 
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const std::size_t max_depth = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_segmentation_depth), 3));
+  const auto vpm = internal::vertex_point_map(tm, np);
+  const std::size_t max_depth = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_segmentation_depth), internal::defaults::max_segmentation_depth));
   const std::size_t max_segments = std::size_t(
     choose_parameter(get_parameter(np, internal_np::st_max_number_of_segments), Segment::none));
-  const double lambda = double(choose_parameter(get_parameter(np, internal_np::st_smoothing_lambda), 1.));
+  const double lambda = double(choose_parameter(get_parameter(np, internal_np::st_smoothing_lambda), internal::defaults::smoothing_lambda));
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   const internal::Segmentation_settings settings = internal::segmentation_settings(np);
   if(max_segments == 0) throw std::invalid_argument("segment_by_symmetry: max_number_of_segments must be positive");
   if(!(lambda >= 0.)) throw std::invalid_argument("segment_by_symmetry: smoothing_lambda must be non-negative");
 
-  internal::triangles_of_mesh(tm, vpm); // the checks of the bad-input contract
+  internal::triangles_of_mesh(tm, np); // the checks of the bad-input contract
   const internal::Segmentation_mesh mesh = internal::segmentation_mesh(tm, vpm);
   const std::size_t n = mesh.number_of_faces();
   const double total_area = std::accumulate(mesh.areas.begin(), mesh.areas.end(), 0.);

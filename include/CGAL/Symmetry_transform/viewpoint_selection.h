@@ -5,6 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_VIEWPOINT_SELECTION_H
 #define CGAL_SYMMETRY_TRANSFORM_VIEWPOINT_SELECTION_H
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 
@@ -249,7 +250,7 @@ OutputIterator best_viewpoints(const SymmetryRange& symmetries, OutputIterator o
   typedef typename internal::Kernel_of_symmetry_range<SymmetryRange>::type GT;
   using internal::Vec3;
   const std::size_t n =
-    std::size_t(parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_samples), 4000));
+    std::size_t(parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_samples), internal::defaults::viewpoint_directions));
   if(n < 12)
     throw std::invalid_argument("Symmetry_transform: best_viewpoints: number_of_samples must be at least 12");
   const internal::Weighted_normals planes(symmetries);

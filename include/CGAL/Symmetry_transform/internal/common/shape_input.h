@@ -8,13 +8,13 @@
 // Reading a mesh or a point set into plain double geometry, with the checks of the bad-input
 // contract (DESIGN.md): every public entry point goes through here.
 
-#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-#include <CGAL/number_utils.h>
+#include <CGAL/centroid.h>
 #include <CGAL/property_map.h>
-
-#include <Eigen/Core>
 
 #include <cmath>
 #include <stdexcept>
@@ -25,14 +25,6 @@ namespace CGAL {
 namespace Symmetry_transform {
 namespace internal {
 
-// The numerical kernels work in double precision whatever the user's kernel.
-typedef CGAL::Simple_cartesian<double> Dkernel;
-typedef Dkernel::Point_3 Dpoint;
-typedef Dkernel::Vector_3 Dvector;
-typedef Dkernel::Triangle_3 Dtriangle;
-
-inline Eigen::Vector3d to_eigen(const Dpoint& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
-
 // Centre of mass and radius: the frame every grid and every plane offset is expressed in.
 struct Shape_frame
 {
@@ -40,21 +32,31 @@ struct Shape_frame
   double radius;
 };
 
-template <typename Point>
-Dpoint to_dpoint(const Point& p)
+// The vertex point map of a mesh, from the named parameters: the one place where it is read.
+template <typename TriangleMesh, typename NamedParameters>
+typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type
+vertex_point_map(const TriangleMesh& tm, const NamedParameters& np)
 {
-  const Dpoint q(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  if(!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()))
-    throw std::invalid_argument("Symmetry_transform: the input has a NaN or infinite coordinate");
-  return q;
+  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, tm));
+}
+
+// The corners of the triangle of halfedge h.
+template <typename TriangleMesh, typename VertexPointMap>
+Dtriangle triangle_of_face(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm,
+                           const VertexPointMap& vpm)
+{
+  return Dtriangle(to_dpoint(get(vpm, source(h, tm))), to_dpoint(get(vpm, target(h, tm))),
+                   to_dpoint(get(vpm, target(next(h, tm), tm))));
 }
 
 // The triangles of a FaceListGraph, with degenerate ones (zero area) left out: they carry no
 // surface. Throws on an empty mesh, a non-triangle face, a non-finite coordinate, or a mesh
 // whose faces are all degenerate.
-template <typename TriangleMesh, typename VertexPointMap>
-std::vector<Dtriangle> triangles_of_mesh(const TriangleMesh& tm, const VertexPointMap& vpm)
+template <typename TriangleMesh, typename NamedParameters>
+std::vector<Dtriangle> triangles_of_mesh(const TriangleMesh& tm, const NamedParameters& np)
 {
+  const auto vpm = vertex_point_map(tm, np);
   std::vector<Dtriangle> triangles;
   std::size_t number_of_faces = 0;
   for(auto f : faces(tm)) {
@@ -64,8 +66,7 @@ std::vector<Dtriangle> triangles_of_mesh(const TriangleMesh& tm, const VertexPoi
       throw std::invalid_argument("Symmetry_transform: the mesh has a face that is not a triangle "
                                   "(triangulate it first, e.g. with "
                                   "CGAL::Polygon_mesh_processing::triangulate_faces)");
-    const Dtriangle t(to_dpoint(get(vpm, source(h, tm))), to_dpoint(get(vpm, target(h, tm))),
-                      to_dpoint(get(vpm, target(next(h, tm), tm))));
+    const Dtriangle t = triangle_of_face(h, tm, vpm);
     if(t.squared_area() > 0.) triangles.push_back(t);
   }
   if(number_of_faces == 0) throw std::invalid_argument("Symmetry_transform: the mesh has no face");
@@ -83,16 +84,7 @@ inline void check_radius(double radius)
 // Area-weighted centroid of the surface and largest distance from it to a vertex.
 inline Shape_frame frame_of_triangles(const std::vector<Dtriangle>& triangles)
 {
-  double area = 0., x = 0., y = 0., z = 0.;
-  for(const Dtriangle& t : triangles) {
-    const double a = std::sqrt(t.squared_area());
-    const Dpoint c = CGAL::centroid(t[0], t[1], t[2]);
-    area += a;
-    x += a * c.x();
-    y += a * c.y();
-    z += a * c.z();
-  }
-  const Dpoint center(x / area, y / area, z / area);
+  const Dpoint center = CGAL::centroid(triangles.begin(), triangles.end(), Dkernel(), CGAL::Dimension_tag<2>());
   double r2 = 0.;
   for(const Dtriangle& t : triangles)
     for(int i = 0; i < 3; ++i) r2 = (std::max)(r2, CGAL::squared_distance(center, t[i]));
@@ -113,14 +105,7 @@ std::vector<Dpoint> points_of_range(const PointRange& points, const PointMap& po
 // Mean of the points and largest distance from it to a point.
 inline Shape_frame frame_of_points(const std::vector<Dpoint>& points)
 {
-  double x = 0., y = 0., z = 0.;
-  for(const Dpoint& p : points) {
-    x += p.x();
-    y += p.y();
-    z += p.z();
-  }
-  const double m = double(points.size());
-  const Dpoint center(x / m, y / m, z / m);
+  const Dpoint center = CGAL::centroid(points.begin(), points.end(), Dkernel(), CGAL::Dimension_tag<0>());
   double r2 = 0.;
   for(const Dpoint& p : points) r2 = (std::max)(r2, CGAL::squared_distance(center, p));
   check_radius(std::sqrt(r2));

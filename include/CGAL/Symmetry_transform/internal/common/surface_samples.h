@@ -8,12 +8,13 @@
 // The samples that Iterative Symmetric Points reflects (and that the remeshing metrics measure
 // distances from): area-uniform on a mesh, a random subset of a point set, from the seed alone.
 
-#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Random.h>
+#include <CGAL/hilbert_sort.h>
 
 #include <Eigen/Core>
 
@@ -27,11 +28,25 @@ namespace CGAL {
 namespace Symmetry_transform {
 namespace internal {
 
+// Samples in the order ISP visits them: every eighth first (those of the coarse phase, spread
+// over the shape), then the others, each part along a Hilbert curve, so that consecutive
+// samples are close and the match of one is a good start for the search of the next.
+inline std::vector<Eigen::Vector3d> isp_order(std::vector<Dpoint> points)
+{
+  CGAL::hilbert_sort(points.begin(), points.end(), Dkernel(), CGAL::Hilbert_sort_median_policy());
+  std::vector<Eigen::Vector3d> ordered;
+  ordered.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); i += 8) ordered.push_back(to_eigen(points[i]));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(i % 8 != 0) ordered.push_back(to_eigen(points[i]));
+  return ordered;
+}
+
 template <typename NamedParameters>
 std::size_t number_of_refinement_samples(const NamedParameters& np)
 {
   const std::size_t samples = std::size_t(parameters::choose_parameter(
-    parameters::get_parameter(np, internal_np::st_number_of_refinement_samples), 10000));
+    parameters::get_parameter(np, internal_np::st_number_of_refinement_samples), defaults::refinement_samples));
   if(samples == 0) throw std::invalid_argument("Symmetry_transform: number_of_refinement_samples must be positive");
   return samples;
 }
@@ -42,7 +57,7 @@ std::size_t number_of_refinement_samples(const NamedParameters& np)
 template <typename NamedParameters>
 std::vector<Eigen::Vector3d> surface_samples(const std::vector<Dtriangle>& triangles, const NamedParameters& np)
 {
-  CGAL::Random random(unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u)));
+  CGAL::Random random(unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), defaults::random_seed)));
   std::vector<double> cumulative_area;
   double total = 0.;
   for(const Dtriangle& t : triangles) cumulative_area.push_back(total += std::sqrt(t.squared_area()));
@@ -62,7 +77,7 @@ std::vector<Eigen::Vector3d> surface_samples(const std::vector<Dtriangle>& trian
 template <typename NamedParameters>
 std::vector<Eigen::Vector3d> point_samples(const std::vector<Dpoint>& points, const NamedParameters& np)
 {
-  const unsigned seed = unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u));
+  const unsigned seed = unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), defaults::random_seed));
   std::vector<Dpoint> chosen = points;
   CGAL::Random random(seed);
   const std::size_t count = (std::min)(points.size(), number_of_refinement_samples(np));

@@ -14,13 +14,11 @@
 // minimises the distance to the match itself (closed form). On a mesh, ISP walks with the
 // approximate matches of a Closest_triangle_field and ends with exact searches in the AABB tree.
 
+#include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
 
-#include <CGAL/hilbert_sort.h>
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 
 #include <Eigen/Dense>
 
@@ -37,40 +35,6 @@
 namespace CGAL {
 namespace Symmetry_transform {
 namespace internal {
-
-// The plane {x : normal . x = offset}, normal of unit length.
-struct Dplane
-{
-  Eigen::Vector3d normal;
-  double offset;
-
-  Eigen::Vector3d reflect(const Eigen::Vector3d& p) const { return p - 2. * (normal.dot(p) - offset) * normal; }
-};
-
-// Samples in the order ISP visits them: every eighth first (those of the coarse phase, spread
-// over the shape), then the others, each part along a Hilbert curve, so that consecutive
-// samples are close and the match of one is a good start for the search of the next.
-inline std::vector<Eigen::Vector3d> isp_order(std::vector<Dpoint> points)
-{
-  CGAL::hilbert_sort(points.begin(), points.end(), Dkernel(), CGAL::Hilbert_sort_median_policy());
-  std::vector<Eigen::Vector3d> ordered;
-  ordered.reserve(points.size());
-  for(std::size_t i = 0; i < points.size(); i += 8) ordered.push_back(to_eigen(points[i]));
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(i % 8 != 0) ordered.push_back(to_eigen(points[i]));
-  return ordered;
-}
-
-// A plane of any kernel as a Dplane; throws if it is degenerate.
-template <typename Plane>
-Dplane to_dplane(const Plane& plane)
-{
-  Eigen::Vector3d n(CGAL::to_double(plane.a()), CGAL::to_double(plane.b()), CGAL::to_double(plane.c()));
-  const double length = n.norm();
-  if(!(length > 0.) || !std::isfinite(length))
-    throw std::invalid_argument("Symmetry_transform: degenerate plane");
-  return {n / length, -CGAL::to_double(plane.d()) / length};
-}
 
 // Closest points on a triangle soup, with the normal of the triangle they lie on.
 class Triangle_matcher
@@ -187,24 +151,20 @@ private:
 // Closest points of a point set (no normals).
 class Point_matcher
 {
-  typedef CGAL::Search_traits_3<Dkernel> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-
 public:
   static constexpr bool has_normals = false;
 
-  explicit Point_matcher(const std::vector<Dpoint>& points) : tree_(points.begin(), points.end()) { tree_.build(); }
+  explicit Point_matcher(const std::vector<Dpoint>& points) : nearest_(points) {}
 
   struct Hint {};
 
   std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint&, bool) const
   {
-    Search search(tree_, Dpoint(p.x(), p.y(), p.z()), 1);
-    return {to_eigen(search.begin()->first), Eigen::Vector3d::Zero()};
+    return {to_eigen(nearest_.point(nearest_(p).index)), Eigen::Vector3d::Zero()};
   }
 
 private:
-  typename Search::Tree tree_;
+  Nearest_point nearest_;
 };
 
 struct Isp_settings

@@ -7,12 +7,11 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,8 +25,7 @@ namespace internal {
 template <typename GT>
 Voxel_grid<GT> empty_grid(const Shape_frame& frame, const Grid_settings& settings)
 {
-  const typename GT::Point_3 center(frame.center.x(), frame.center.y(), frame.center.z());
-  return Voxel_grid<GT>(settings.resolution, center, frame.radius, settings.side_length);
+  return Voxel_grid<GT>(settings.resolution, to_point<GT>(frame.center), frame.radius, settings.side_length);
 }
 
 // Voxel index range [first, last] whose centres lie within [lo, hi] along one axis.
@@ -149,17 +147,10 @@ template <typename GT>
 void fill_gaussian_distance_transform_of_points(Voxel_grid<GT>& grid, const std::vector<Dpoint>& points,
                                                 const Grid_settings& settings)
 {
-  typedef CGAL::Search_traits_3<Dkernel> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-
   std::vector<char> in_band(grid.values().size(), 0);
   for(const Dpoint& p : points) mark_band_of_point(grid, p, settings.cutoff(), in_band);
-  typename Search::Tree tree(points.begin(), points.end());
-  tree.build();
-  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t) {
-    Search search(tree, p, 1);
-    return search.begin()->second;
-  });
+  const Nearest_point nearest(points);
+  fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t) { return nearest(p).squared_distance; });
 }
 
 } // namespace internal

@@ -5,6 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
@@ -58,10 +59,10 @@ Grid_settings grid_settings(const NamedParameters& np, double radius)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const long n = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), 64));
-  const double sigma = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), 1.5));
+  const long n = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), defaults::grid_resolution));
+  const double sigma = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), defaults::gaussian_width));
   const bool default_margin = parameters::is_default_parameter<NamedParameters, internal_np::st_grid_margin_t>::value;
-  const double margin = double(choose_parameter(get_parameter(np, internal_np::st_grid_margin), 1.));
+  const double margin = double(choose_parameter(get_parameter(np, internal_np::st_grid_margin), defaults::grid_margin));
   const unsigned threads = unsigned(
     choose_parameter(get_parameter(np, internal_np::st_number_of_threads), default_number_of_threads()));
   if(!(sigma > 0.))

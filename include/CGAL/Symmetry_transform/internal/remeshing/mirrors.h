@@ -9,55 +9,18 @@
 // through each plane (for the flooding), and the nearest mesh vertex to a point (for the mirror
 // images of anchors), both by Kd-tree queries.
 
+#include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
 
 #include <cmath>
-#include <memory>
 #include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Symmetry_transform {
 namespace internal {
-
-// The nearest of a set of points to a query (CGAL::Kd_tree), with its index. Queries are
-// thread-safe once constructed.
-class Nearest_point
-{
-  typedef CGAL::Search_traits_adapter<std::size_t, CGAL::Pointer_property_map<Dpoint>::const_type, CGAL::Search_traits_3<Dkernel>> Traits;
-  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
-
-public:
-  explicit Nearest_point(const std::vector<Eigen::Vector3d>& points)
-  {
-    for(const Eigen::Vector3d& p : points) points_.emplace_back(p.x(), p.y(), p.z());
-    std::vector<std::size_t> indices(points_.size());
-    for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    tree_ = std::make_unique<Search::Tree>(indices.begin(), indices.end(), Search::Tree::Splitter(),
-                                           Traits(map()));
-    tree_->build();
-  }
-
-  // The index of the nearest point and its distance.
-  std::pair<std::size_t, double> operator()(const Eigen::Vector3d& q) const
-  {
-    const Search search(*tree_, Dpoint(q.x(), q.y(), q.z()), 1, 0., true,
-                        Search::Distance(map()));
-    return {search.begin()->first, std::sqrt(search.begin()->second)};
-  }
-
-private:
-  CGAL::Pointer_property_map<Dpoint>::const_type map() const { return CGAL::make_property_map(points_); }
-
-  std::vector<Dpoint> points_;
-  std::unique_ptr<Search::Tree> tree_;
-};
 
 // Per face and plane, the face whose centroid lies nearest to the mirror image of its centroid
 // (a Kd-tree query made once), or `none` if that is farther than `tolerance` (no symmetric
@@ -74,7 +37,8 @@ inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std:
   parallel_for(nf, threads, [&](unsigned, std::size_t begin, std::size_t end) {
     for(std::size_t f = begin; f < end; ++f)
       for(std::size_t j = 0; j < k; ++j) {
-        const auto [g, d] = nearest(planes[j].reflect(m.centroid[f]));
+        const auto [g, d2] = nearest(planes[j].reflect(m.centroid[f]));
+        const double d = std::sqrt(d2);
         distance[f * k + j] = d;
         if(d <= tolerance && g != f) mirror[f * k + j] = g;
       }

@@ -10,6 +10,7 @@
 // fuzzy clustering and graph cut, and the connected parts of the labels. Segments of one level
 // are split in parallel.
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/fuzzy_clustering.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
@@ -58,19 +59,19 @@ Segmentation_settings segmentation_settings(const NamedParameters& np)
   using parameters::choose_parameter;
   using parameters::get_parameter;
   Segmentation_settings s;
-  s.grid_resolution = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), 32));
-  s.gaussian_width = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), 1.5));
-  s.number_of_samples = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), 100000));
+  s.grid_resolution = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), defaults::segmentation_grid_resolution));
+  s.gaussian_width = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), defaults::gaussian_width));
+  s.number_of_samples = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), defaults::segmentation_monte_carlo_pairs));
   s.number_of_refinement_samples =
-    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), 5000));
-  s.number_of_iterations = unsigned(choose_parameter(get_parameter(np, internal_np::number_of_iterations), 20));
-  s.max_number_of_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), 6));
-  s.symmetry_threshold = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), 0.1));
-  s.laplacian_threshold = double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), 0.1));
+    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), defaults::segmentation_refinement_samples));
+  s.number_of_iterations = unsigned(choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::isp_iterations));
+  s.max_number_of_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), defaults::segmentation_max_number_of_planes));
+  s.symmetry_threshold = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), defaults::symmetry_threshold));
+  s.laplacian_threshold = double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), defaults::laplacian_threshold));
   s.method = choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
   s.estimator =
     choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
-  s.seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), 0u));
+  s.seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), defaults::random_seed));
   s.threads = (std::max)(1u, unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
                                                       default_number_of_threads())));
   if(s.max_number_of_planes == 0)
