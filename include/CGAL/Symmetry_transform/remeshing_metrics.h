@@ -55,7 +55,7 @@ other, as `CGAL::Polygon_mesh_processing::approximate_Hausdorff_distance()` does
 
 \cgalNamedParamsBegin{Named Parameters of np1}
   \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the points of the vertices of `tm1`}
+    \cgalParamDescription{the points of the vertices of `tm1` (those of `tm2` are given in `np2`)}
     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh1>::%vertex_descriptor` as key and a `Point_3` as value}
     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm1)`}
   \cgalParamNEnd
@@ -258,6 +258,11 @@ as in the thesis's Figure 5.6.
 \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{a geometric traits class, of which only the type is used (it names the type of `plane`); all computations are in double precision}
+    \cgalParamType{a model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{the points of the vertices of `tm`, whose face centroids are reflected}
     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and `geom_traits::Point_3` as value}
@@ -267,11 +272,6 @@ as in the thesis's Figure 5.6.
     \cgalParamDescription{the number of threads that look for the points of `tm` nearest to the reflected centroids; the result does not depend on it}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the type of `plane`; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
