@@ -39,7 +39,7 @@ struct Approximation_error
 /*!
 \ingroup PkgSymmetryTransformRemeshingRef
 
-Measures how far two triangle meshes are from each other (e.g. an input mesh and its
+Measures how far two triangle meshes are from each other (such as an input mesh and its
 approximation): area-uniform samples of each mesh are matched to their closest points on the
 other, as `CGAL::Polygon_mesh_processing::approximate_Hausdorff_distance()` does one way.
 
@@ -245,8 +245,8 @@ double symmetry_error(const TriangleMesh& tm,
 \ingroup PkgSymmetryTransformRemeshingRef
 
 Computes, for each face of a triangle mesh, the distance from the mirror image of its centroid
-through `plane` to the mesh (0 where the mesh is symmetric), e.g. to colour a remeshed surface
-as in the thesis's Figure 5.6.
+through `plane` to the mesh (0 where the mesh is symmetric), for instance to colour a remeshed
+surface as in the thesis's Figure 5.6.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam FaceErrorMap a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and `double` as value
