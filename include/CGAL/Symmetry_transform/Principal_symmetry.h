@@ -9,7 +9,7 @@ namespace CGAL {
 namespace Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRef
+\ingroup PkgSymmetryTransformPrincipalRef
 A principal symmetry of a shape: a local maximum of its reflective symmetry transform,
 refined to high precision.
 \tparam GeomTraits a model of `Kernel`

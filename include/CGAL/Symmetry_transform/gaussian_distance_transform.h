@@ -19,16 +19,11 @@ namespace Symmetry_transform {
 /*!
 \ingroup PkgSymmetryTransformGridRef
 
-Computes the Gaussian Euclidean Distance Transform (GEDT) of a triangle mesh:
-the function \f$ f(x) = \exp(-d(x)^2 / 2\sigma^2) \f$, where \f$ d(x) \f$ is the distance
-from \f$ x \f$ to the surface, sampled on a `Voxel_grid` centred on the area-weighted centre of
-mass and normalised so that the sum of the squared samples is 1.
-
-Distances are exact (closest point on the triangles, through a `CGAL::AABB_tree`) in the band
-of \f$ 3\sigma \f$ around the surface where the function is not negligible; it is zero
-elsewhere. The side of the cube is, by default, the diameter \f$ 2R \f$ of the bounding sphere
-around the centre of mass plus room for that band, so the placement is invariant under rotation.
-Degenerate faces (zero area) are ignored.
+Computes the Gaussian Euclidean Distance Transform (GEDT) of a triangle mesh: the function
+\f$ f(x) = \exp(-d(x)^2 / 2\sigma^2) \f$, \f$ d(x) \f$ the exact distance from \f$ x \f$ to the
+surface, sampled on a `Voxel_grid` centred on the area-weighted centre of mass, zero beyond
+\f$ 3\sigma \f$ and normalised to a unit sum of squared samples (\ref SymmetryTransformGEDT,
+\ref SymmetryTransformGEDTMethod). Degenerate faces (zero area) are ignored.
 
 \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
@@ -54,7 +49,7 @@ Degenerate faces (zero area) are ignored.
     \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads that compute distances}
+    \cgalParamDescription{the number of threads}
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{`std::thread::hardware_concurrency()`}
   \cgalParamNEnd
@@ -65,7 +60,7 @@ Degenerate faces (zero area) are ignored.
     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
   \cgalParamNEnd
   \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
     \cgalParamType{a class model of `Kernel`}
     \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
   \cgalParamNEnd
@@ -84,8 +79,6 @@ Voxel_grid<typename GetGeomTraits<TriangleMesh, NamedParameters>::type>
 gaussian_distance_transform(const TriangleMesh& tm,
                             const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
 
   return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, np), np);
@@ -96,22 +89,45 @@ gaussian_distance_transform(const TriangleMesh& tm,
 
 Computes the Gaussian Euclidean Distance Transform of a point set: as
 `gaussian_distance_transform()`, with \f$ d(x) \f$ the distance to the nearest point (found
-in a `CGAL::Kd_tree`), the grid centred on the mean of the points and its radius the largest
-distance from the mean to a point.
+in a `CGAL::Kd_tree`), the grid centred on the mean of the points.
 
 \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
 \param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": `grid_resolution`,
-          `gaussian_width`, `grid_margin`, `number_of_threads` and `geom_traits` as in
-          `gaussian_distance_transform()`, and:
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{grid_resolution}
+    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
+    \cgalParamType{`int`}
+    \cgalParamDefault{64}
+    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width}
+  \cgalParamNEnd
+  \cgalParamNBegin{gaussian_width}
+    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
+    \cgalParamType{`double`}
+    \cgalParamDefault{1.5}
+  \cgalParamNEnd
+  \cgalParamNBegin{grid_margin}
+    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
+    \cgalParamType{`double`, at least 1}
+    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`std::thread::hardware_concurrency()`}
+  \cgalParamNEnd
   \cgalParamNBegin{point_map}
     \cgalParamDescription{a property map associating points to the elements of `points`}
     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
     \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -133,10 +149,7 @@ gaussian_distance_transform_of_points(const PointRange& points,
   const std::vector<internal::Dpoint> samples =
     internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
   const internal::Shape_frame frame = internal::frame_of_points(samples);
-  const internal::Grid_settings settings = internal::grid_settings(np, frame.radius);
-  Voxel_grid<GT> grid = internal::empty_grid<GT>(frame, settings);
-  internal::fill_gaussian_distance_transform_of_points(grid, samples, settings);
-  return grid;
+  return internal::gaussian_distance_transform_of_points<GT>(samples, frame, internal::grid_settings(np, frame.radius));
 }
 
 } // namespace Symmetry_transform

@@ -75,13 +75,18 @@ private:
 
 namespace internal {
 
+// FFTW's basic interface counts samples in int: the padded grid, (2n)^3 samples, must fit.
+constexpr std::size_t max_point_symmetry_resolution = 512;
+// The logarithms of the samples around a peak are taken of at least this, a positive number.
+constexpr double smallest_logarithm_argument = 1e-300;
+
 // Offset of the maximum of exp(q), q the quadratic through the logarithms of the 27 values
 // sample(di, dj, dk), di, dj, dk in {-1, 0, 1}, around a largest sample; zero if the samples
 // do not curve down, and at most one step along each axis.
 template <typename Sample>
 Eigen::Vector3d newton_step_to_peak(const Sample& sample)
 {
-  auto log_sample = [&](const long* d) { return std::log((std::max)(sample(d[0], d[1], d[2]), 1e-300)); };
+  auto log_sample = [&](const long* d) { return std::log((std::max)(sample(d[0], d[1], d[2]), smallest_logarithm_argument)); };
   const long zero[3] = {0, 0, 0};
   Eigen::Vector3d gradient;
   Eigen::Matrix3d hessian;
@@ -131,8 +136,7 @@ template <typename GeomTraits, typename NamedParameters = parameters::Default_na
 Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<GeomTraits>& f,
                                                               const NamedParameters& = parameters::default_values())
 {
-  // FFTW's basic interface counts samples in int: (2n)^3 must fit.
-  if(f.resolution() > 512)
+  if(f.resolution() > internal::max_point_symmetry_resolution)
     throw std::invalid_argument("point_symmetry_transform: the resolution must be at most 512");
   const int n = int(f.resolution()), N = 2 * n;
   const std::size_t real_size = std::size_t(N) * N * N, complex_size = std::size_t(N) * N * (N / 2 + 1);
@@ -199,8 +203,42 @@ Computes the Point Symmetry Transform of a triangle mesh: its GEDT by
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
 \param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform()`
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{grid_resolution}
+    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
+    \cgalParamType{`int`}
+    \cgalParamDefault{64}
+    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width}
+  \cgalParamNEnd
+  \cgalParamNBegin{gaussian_width}
+    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
+    \cgalParamType{`double`}
+    \cgalParamDefault{1.5}
+  \cgalParamNEnd
+  \cgalParamNBegin{grid_margin}
+    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
+    \cgalParamType{`double`, at least 1}
+    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`std::thread::hardware_concurrency()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the Point Symmetry Transform of the GEDT of `tm`
 
@@ -223,8 +261,41 @@ Computes the Point Symmetry Transform of a point set: its GEDT by
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
 \param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform_of_points()`
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{grid_resolution}
+    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
+    \cgalParamType{`int`}
+    \cgalParamDefault{64}
+    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width}
+  \cgalParamNEnd
+  \cgalParamNBegin{gaussian_width}
+    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
+    \cgalParamType{`double`}
+    \cgalParamDefault{1.5}
+  \cgalParamNEnd
+  \cgalParamNBegin{grid_margin}
+    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
+    \cgalParamType{`double`, at least 1}
+    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`std::thread::hardware_concurrency()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map associating points to the elements of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the Point Symmetry Transform of the GEDT of `points`
 

@@ -242,10 +242,7 @@ public:
   /// \throws std::runtime_error if the file cannot be written.
   void save(const std::string& filename) const
   {
-    std::ofstream os(filename, std::ios::binary);
-    if(!os) throw std::runtime_error("Reflective_symmetry_transform: cannot open " + filename + " for writing");
-    save(os);
-    if(!os) throw std::runtime_error("Reflective_symmetry_transform: cannot write " + filename);
+    internal::write_file(filename, "Reflective_symmetry_transform", [this](std::ostream& os) { save(os); });
   }
 
   /// Reads a transform written by `save()`.
@@ -267,9 +264,7 @@ public:
   /// \throws std::runtime_error if the file cannot be opened or does not hold a transform written by `save()`.
   static Reflective_symmetry_transform load(const std::string& filename)
   {
-    std::ifstream is(filename, std::ios::binary);
-    if(!is) throw std::runtime_error("Reflective_symmetry_transform: cannot open " + filename);
-    return load(is);
+    return internal::read_file(filename, "Reflective_symmetry_transform", [](std::istream& is) { return load(is); });
   }
 
   /// \cond SKIP_IN_MANUAL
@@ -352,12 +347,13 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   using parameters::get_parameter;
   const Reflective_symmetry_method method =
     choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
-  const std::size_t pairs = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), internal::defaults::monte_carlo_pairs));
+  const std::size_t samples =
+    std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), internal::defaults::monte_carlo_pairs));
   const Monte_carlo_estimator estimator =
     choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
   const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), internal::defaults::random_seed));
-  const unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
-                                                     internal::default_number_of_threads()));
+  unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
+                                               internal::default_number_of_threads()));
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
 
   if(f.resolution() % 2 != 0)
@@ -368,13 +364,23 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
 
   const auto start = std::chrono::steady_clock::now();
   Reflective_symmetry_transform<GeomTraits> result(f.resolution(), f.center(), f.radius());
+  threads = (std::max)(1u, threads);
   if(method == Reflective_symmetry_method::EXACT) {
-    internal::exact_reflective_symmetry(f, result.bins(), (std::max)(1u, threads), result.values());
+    internal::exact_reflective_symmetry(f, result.bins(), threads, result.values());
   } else {
-    if(pairs == 0) throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
-    internal::Monte_carlo_reflective_symmetry<GeomTraits>(f, result.bins())
-      .run(internal::Estimator(int(estimator)),
-           pairs, seed, (std::max)(1u, threads), result.values());
+    if(samples == 0) throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
+    const internal::Monte_carlo_reflective_symmetry<GeomTraits> monte_carlo(f, result.bins());
+    switch(estimator) {
+    case Monte_carlo_estimator::PAIR_JACOBIAN:
+      monte_carlo.run_pair_jacobian(samples, seed, threads, result.values());
+      break;
+    case Monte_carlo_estimator::BOUNDED_WEIGHT:
+      monte_carlo.run_bounded_weight(samples, seed, threads, result.values());
+      break;
+    case Monte_carlo_estimator::STRATIFIED_LINES:
+      monte_carlo.run_stratified_lines(samples, seed, threads, result.values());
+      break;
+    }
   }
   if(verbose)
     std::cerr << "reflective_symmetry_transform: " << f.resolution() << "^3 bins, "
@@ -393,9 +399,69 @@ Computes the Planar Reflective Symmetry Transform of a triangle mesh: its GEDT b
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
 \param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform()` and of `reflective_symmetry_transform()` on grids;
-          `grid_resolution` must be even
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{grid_resolution}
+    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
+    \cgalParamType{`int`}
+    \cgalParamDefault{64}
+    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width; even}
+  \cgalParamNEnd
+  \cgalParamNBegin{gaussian_width}
+    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
+    \cgalParamType{`double`}
+    \cgalParamDefault{1.5}
+  \cgalParamNEnd
+  \cgalParamNBegin{grid_margin}
+    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
+    \cgalParamType{`double`, at least 1}
+    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`std::thread::hardware_concurrency()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `tm`}
+    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+                   as key type and `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+  \cgalParamNBegin{prst_method}
+    \cgalParamDescription{how the bins are computed}
+    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
+    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_samples}
+    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
+                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
+                          plane for `BOUNDED_WEIGHT`}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{2,000,000}
+  \cgalParamNEnd
+  \cgalParamNBegin{monte_carlo_estimator}
+    \cgalParamDescription{the Monte Carlo estimator}
+    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
+    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{whether to print the time taken on `std::cerr`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
 bins along each axis, centred on the centre of mass of `tm`
@@ -419,9 +485,68 @@ Computes the Planar Reflective Symmetry Transform of a point set: its GEDT by
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 
 \param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform_of_points()` and of `reflective_symmetry_transform()` on
-          grids; `grid_resolution` must be even
+\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{grid_resolution}
+    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
+    \cgalParamType{`int`}
+    \cgalParamDefault{64}
+    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width; even}
+  \cgalParamNEnd
+  \cgalParamNBegin{gaussian_width}
+    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
+    \cgalParamType{`double`}
+    \cgalParamDefault{1.5}
+  \cgalParamNEnd
+  \cgalParamNBegin{grid_margin}
+    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
+    \cgalParamType{`double`, at least 1}
+    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_threads}
+    \cgalParamDescription{the number of threads}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{`std::thread::hardware_concurrency()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{point_map}
+    \cgalParamDescription{a property map associating points to the elements of `points`}
+    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
+    \cgalParamDefault{`CGAL::Identity_property_map`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
+    \cgalParamType{a class model of `Kernel`}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  \cgalParamNEnd
+  \cgalParamNBegin{prst_method}
+    \cgalParamDescription{how the bins are computed}
+    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
+    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_samples}
+    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
+                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
+                          plane for `BOUNDED_WEIGHT`}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{2,000,000}
+  \cgalParamNEnd
+  \cgalParamNBegin{monte_carlo_estimator}
+    \cgalParamDescription{the Monte Carlo estimator}
+    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
+    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{whether to print the time taken on `std::cerr`}
+    \cgalParamType{`bool`}
+    \cgalParamDefault{`false`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
 
 \returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
 

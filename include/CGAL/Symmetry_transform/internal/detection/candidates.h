@@ -6,10 +6,10 @@
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_CANDIDATES_H
 
 // Candidates of principal symmetries among the local maxima of a discrete PRST (thesis,
-// section 3.3; thresholds of DESIGN.md), their refinement, and the merging of duplicates.
+// section 3.3; thresholds of DESIGN.md), and the tests that tell two planes apart.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
