@@ -58,7 +58,7 @@
 
 #include "benchmark_utilities.h"
 // Shared with test_symmetric_remeshing: the manifold defects of a triangle soup.
-#include "../../test/Symmetry_transform/include/Symmetry_transform_soup_defects.h"
+#include "Symmetry_transform_soup_defects.h" // test/Symmetry_transform/include
 
 namespace {
 

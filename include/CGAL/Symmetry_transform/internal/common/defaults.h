@@ -20,7 +20,9 @@ namespace defaults {
 // reflective_symmetry_transform(), detect_principal_symmetries()).
 constexpr long grid_resolution = 64;          // the thesis's 64^3
 constexpr double gaussian_width = 1.5;        // sigma in voxels (DESIGN.md: 1.5 to 2)
-constexpr double grid_margin = 1.;            // 1: the side that leaves room for the Gaussian tail
+// grid_margin has no constant default: unless it is given, the side of the grid leaves room for
+// the Gaussian tail around the bounding sphere (internal/grid/settings.h); never read.
+constexpr double grid_margin = 1.;
 constexpr std::size_t monte_carlo_pairs = 2000000; // the thesis's 2e6 pairs at 64^3
 constexpr unsigned random_seed = 0;
 
@@ -45,6 +47,10 @@ constexpr std::size_t remeshing_iterations = 20;
 constexpr std::size_t remeshing_relaxations = 5;
 constexpr double position_weight = 0.002;          // the thesis's alpha
 constexpr double subdivision_ratio = 5.;
+// As CGAL's VSA: without a usable max_number_of_proxies, at most a proxy per 3 faces, and the
+// seeding stops when the error drops by less than this fraction.
+constexpr std::size_t faces_per_proxy = 3;
+constexpr double min_error_drop = 0.1;
 constexpr std::size_t metric_samples = 20000;     // remeshing metrics: samples on each surface
 
 // Segmentation: each segment gets its own detection, cheaper than the whole shape's: a coarser

@@ -73,13 +73,6 @@ public:
     return closest(p, none);
   }
 
-  // For the callers that keep the validity of their hint apart (remeshing_metrics.h).
-  Match closest(const Eigen::Vector3d& p, Hint& hint, bool use_hint) const
-  {
-    hint.valid = use_hint;
-    return closest(p, hint);
-  }
-
 private:
   Triangle_tree tree_;
 };

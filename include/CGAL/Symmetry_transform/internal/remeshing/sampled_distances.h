@@ -14,7 +14,7 @@
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
-#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/detection/matchers.h>
 
 #include <Eigen/Core>
 
@@ -46,7 +46,7 @@ std::vector<double> distances_to(const std::vector<Eigen::Vector3d>& points, con
     Triangle_matcher::Hint hint;
     for(std::size_t i = begin; i < end; ++i) {
       const Eigen::Vector3d q = map(points[i]);
-      d[i] = (matcher.closest(q, hint, i > begin).first - q).norm();
+      d[i] = (matcher.closest(q, hint).first - q).norm(); // the hint: the previous point's match
     }
   });
   return d;

@@ -10,6 +10,7 @@
 // hierarchical (the number of proxies doubled at a time, shared by error) seeding, with
 // `number_of_relaxations` Lloyd iterations after each step.
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/partition.h>
 
 #include <CGAL/Random.h>
@@ -21,12 +22,6 @@
 namespace CGAL {
 namespace Symmetry_transform {
 namespace internal {
-
-// CGAL's VSA defaults (approximate_triangle_mesh): at most a third of the faces as proxies, and
-// seeding stopped when the error falls under 0.1 of the initial error, if neither
-// max_number_of_proxies nor min_error_drop is given.
-constexpr std::size_t faces_per_proxy = 3;
-constexpr double default_min_error_drop = 0.1;
 
 // One proxy per connected component of the mesh, fitted to it.
 inline void bootstrap(Symmetric_partition& partition)
@@ -122,19 +117,19 @@ inline void seed_random(Symmetric_partition& partition, std::size_t max_proxies)
 // The seeding of the settings, with CGAL's rules for `max_number_of_proxies` and
 // `min_error_drop`: a maximum under a third of the faces is kept, with the error drop if one in
 // (0, 1) is given; otherwise the maximum is a third of the faces, and the error drop the given
-// one or `default_min_error_drop`.
+// one or `defaults::min_error_drop`.
 inline void seed_proxies(Symmetric_partition& partition)
 {
   const Remeshing_settings& settings = partition.settings();
   std::size_t max_proxies = settings.max_number_of_proxies;
   double min_drop = settings.min_error_drop;
   const bool drop_given = min_drop < 1. && min_drop > 0.;
-  const std::size_t most = partition.mesh().number_of_faces() / faces_per_proxy;
+  const std::size_t most = partition.mesh().number_of_faces() / defaults::faces_per_proxy;
   if(max_proxies < most && max_proxies > 0) {
     if(!drop_given) min_drop = -1.; // not used
   } else {
     max_proxies = most;
-    if(!drop_given) min_drop = default_min_error_drop;
+    if(!drop_given) min_drop = defaults::min_error_drop;
   }
   bootstrap(partition);
   if(partition.proxies().size() >= max_proxies) return;
