@@ -202,7 +202,8 @@ described in \ref SymmetryTransformSegmentation.
   \cgalParamNEnd
   \cgalParamNBegin{face_index_map}
     \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-                           0 and `num_faces(tm) - 1`}
+                           0 and `num_faces(tm) - 1`; if the indices have gaps (a `Surface_mesh`
+                           with removed faces not yet collected), the order of `faces(tm)` is used}
     \cgalParamType{a model of `ReadablePropertyMap` with
                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and
                    `std::size_t` as value type}
@@ -233,14 +234,15 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const internal::Segmentation_settings settings = internal::segmentation_settings(np);
   internal::triangles_of_mesh(tm, np); // the checks of the bad-input contract
+  const auto vpm = internal::vertex_point_map(tm, np);
   const auto face_index = CGAL::get_initialized_face_index_map(tm, np);
-  const internal::Segmentation_mesh mesh = internal::segmentation_mesh(tm, internal::vertex_point_map(tm, np), face_index);
-
-  internal::Segmentation_hierarchy<GT, Symmetry_segment<GT>> hierarchy(mesh, settings);
-  hierarchy.grow();
-  const std::size_t number_of_segments = hierarchy.write_segment_ids(tm, face_index, segment_id_map);
+  std::vector<Symmetry_segment<GT>> segments;
+  const std::size_t number_of_segments =
+    internal::numbers_the_faces(tm, face_index)
+      ? internal::segment_mesh<GT>(tm, vpm, face_index, segment_id_map, settings, segments)
+      : internal::segment_mesh<GT>(tm, vpm, internal::face_index_in_order(tm), segment_id_map, settings, segments);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_segmentation_tree_t>::value)
-    parameters::get_parameter_reference(np, internal_np::st_segmentation_tree).segments = std::move(hierarchy.segments());
+    parameters::get_parameter_reference(np, internal_np::st_segmentation_tree).segments = std::move(segments);
   return number_of_segments;
 }
 

@@ -15,6 +15,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <Eigen/Dense>
 
@@ -22,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <iterator>
 #include <numeric>
 #include <vector>
 
@@ -86,13 +88,45 @@ void add_dual_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const Fac
   }
 }
 
-// Reads the mesh, its faces indexed by `face_index` (the checks of triangles_of_mesh() having
-// been done by the caller).
+inline double area_of(const std::array<Eigen::Vector3d, 3>& t) { return 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm(); }
+
+template <typename TriangleMesh>
+std::size_t number_of_faces(const TriangleMesh& tm)
+{
+  return std::size_t(std::distance(faces(tm).begin(), faces(tm).end()));
+}
+
+// Whether `face_index` numbers the faces 0 to n - 1, each once: CGAL's initialized index maps do,
+// except on a Surface_mesh with removed faces not yet collected (its indices then have gaps).
+template <typename TriangleMesh, typename FaceIndexMap>
+bool numbers_the_faces(const TriangleMesh& tm, const FaceIndexMap& face_index)
+{
+  std::vector<bool> seen(number_of_faces(tm), false);
+  for(auto f : faces(tm)) {
+    const std::size_t i = std::size_t(get(face_index, f));
+    if(i >= seen.size() || seen[i]) return false;
+    seen[i] = true;
+  }
+  return true;
+}
+
+// The faces numbered in the order of faces(tm), in a dynamic property map of the mesh.
+template <typename TriangleMesh>
+auto face_index_in_order(const TriangleMesh& tm)
+{
+  auto face_index = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  std::size_t i = 0;
+  for(auto f : faces(tm)) put(face_index, f, i++);
+  return face_index;
+}
+
+// Reads the mesh, its faces numbered 0 to n - 1 by `face_index` (the checks of
+// triangles_of_mesh() having been done by the caller).
 template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
 Segmentation_mesh segmentation_mesh(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& face_index)
 {
   Segmentation_mesh mesh;
-  const std::size_t n = std::size_t(num_faces(tm));
+  const std::size_t n = number_of_faces(tm);
   mesh.triangles.resize(n);
   mesh.areas.resize(n);
   mesh.face_edges.resize(n);
@@ -100,7 +134,7 @@ Segmentation_mesh segmentation_mesh(const TriangleMesh& tm, const VertexPointMap
     const std::size_t i = std::size_t(get(face_index, f));
     const Dtriangle t = triangle_of_face(halfedge(f, tm), tm, vpm);
     mesh.triangles[i] = {to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2])};
-    mesh.areas[i] = 0.5 * (mesh.triangles[i][1] - mesh.triangles[i][0]).cross(mesh.triangles[i][2] - mesh.triangles[i][0]).norm();
+    mesh.areas[i] = area_of(mesh.triangles[i]);
   }
   add_dual_edges(tm, vpm, face_index, mesh);
   return mesh;

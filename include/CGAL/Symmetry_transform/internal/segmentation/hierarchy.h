@@ -173,6 +173,22 @@ private:
   std::size_t leaves_ = 0; // the number of leaves of the tree
 };
 
+// The segmentation of `tm`, its faces numbered 0 to n - 1 by `face_index`: writes the segment
+// ids, moves the tree into `segments` and returns the number of segments.
+template <typename GT, typename Segment, typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap,
+          typename SegmentIdMap>
+std::size_t segment_mesh(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& face_index,
+                         SegmentIdMap segment_id_map, const Segmentation_settings& settings,
+                         std::vector<Segment>& segments)
+{
+  const Segmentation_mesh mesh = segmentation_mesh(tm, vpm, face_index);
+  Segmentation_hierarchy<GT, Segment> hierarchy(mesh, settings);
+  hierarchy.grow();
+  const std::size_t number_of_segments = hierarchy.write_segment_ids(tm, face_index, segment_id_map);
+  segments = std::move(hierarchy.segments());
+  return number_of_segments;
+}
+
 } // namespace internal
 } // namespace Symmetry_transform
 } // namespace CGAL
