@@ -14,6 +14,7 @@
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
+#include <CGAL/Symmetry_transform/internal/detection/face_support.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/fuzzy_clustering.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/settings.h>
@@ -60,16 +61,9 @@ struct Split
 
 // The points of a face at which its supports are evaluated: its centroid and three interior
 // points, as symmetry_support() does.
-// TODO(lead): use the shared four-point helper
-inline std::array<Eigen::Vector3d, 4> support_points(const std::array<Eigen::Vector3d, 3>& t)
-{
-  return {(t[0] + t[1] + t[2]) / 3., (4. * t[0] + t[1] + t[2]) / 6., (t[0] + 4. * t[1] + t[2]) / 6.,
-          (t[0] + t[1] + 4. * t[2]) / 6.};
-}
-
 // Features: the support of each plane on each face (rows: the faces of `faces`), L_ij in the
 // thesis, "the average value in the GEDT of a point of face i reflected by plane j", at the
-// support_points() of the face. The GEDT is evaluated exactly, from the distance to the nearest
+// face_support_points() of the face. The GEDT is evaluated exactly, from the distance to the nearest
 // triangle that the detection's closest-triangle field offers, with the Gaussian width `sigma`.
 // Points reflected beyond the field's band get 0.
 inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
@@ -78,7 +72,10 @@ inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::v
 {
   const double inverse_two_sigma2 = 1. / (2. * sigma * sigma);
   std::vector<std::array<Eigen::Vector3d, 4>> points(faces.size());
-  for(std::size_t i = 0; i < faces.size(); ++i) points[i] = support_points(mesh.triangles[faces[i]]);
+  for(std::size_t i = 0; i < faces.size(); ++i) {
+    const std::array<Eigen::Vector3d, 3>& t = mesh.triangles[faces[i]];
+    points[i] = face_support_points(t[0], t[1], t[2]);
+  }
   Eigen::MatrixXd features = Eigen::MatrixXd::Zero(Eigen::Index(faces.size()), Eigen::Index(planes.size()));
   for(std::size_t j = 0; j < planes.size(); ++j) {
     const Dplane mirror = to_dplane(planes[j].plane);
