@@ -13,22 +13,21 @@
 #include <stdexcept>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformGridRef
-
-A cube of `n`×`n`×`n` samples of a scalar function of space, centred on the centre of mass
-of a shape and large enough to hold its bounding sphere: this placement does not depend on
-the orientation of the shape, so transforms computed on the grid rotate with the shape.
-
-Sample `(i,j,k)` sits at the centre of its voxel,
-`center() + voxel_size() * (i + 1/2 - n/2, j + 1/2 - n/2, k + 1/2 - n/2)`.
-Values are stored as `double` whatever the number type of the traits (the transforms are
-numerical kernels); `i` varies fastest in `values()`.
-
-\tparam GeomTraits a model of `Kernel`; only `FT`, `Point_3` and their coordinate access are used.
+ * \ingroup PkgSymmetryTransformGridRef
+ *
+ * A cube of `n`×`n`×`n` samples of a scalar function of space, centred on the centre of mass
+ * of a shape and large enough to hold its bounding sphere: this placement does not depend on
+ * the orientation of the shape, so transforms computed on the grid rotate with the shape.
+ *
+ * Sample `(i,j,k)` sits at the centre of its voxel,
+ * `center() + voxel_size() * (i + 1/2 - n/2, j + 1/2 - n/2, k + 1/2 - n/2)`.
+ * Values are stored as `double` whatever the number type of the traits (the transforms are
+ * numerical kernels); `i` varies fastest in `values()`.
+ *
+ * \tparam GeomTraits a model of `Kernel`; only `FT`, `Point_3` and their coordinate access are used.
 */
 template <typename GeomTraits>
 class Voxel_grid
@@ -43,14 +42,14 @@ public:
   Voxel_grid() = default;
 
   /*!
-  Creates a grid of `resolution`³ samples, all set to `value`, over the axis-aligned cube of
-  side `side_length` centred on `center`.
-  \param resolution the number \f$ n \f$ of samples along each axis
-  \param center the centre of the cube, usually the centre of mass of the shape
-  \param radius the radius of the shape the grid represents (the largest distance from `center` to the shape)
-  \param side_length the side of the cube
-  \param value the initial value of every sample
-  \throws std::invalid_argument unless `resolution > 0`, `side_length > 0` and `radius >= 0`.
+ *   Creates a grid of `resolution`³ samples, all set to `value`, over the axis-aligned cube of
+ *   side `side_length` centred on `center`.
+ *   \param resolution the number \f$ n \f$ of samples along each axis
+ *   \param center the centre of the cube, usually the centre of mass of the shape
+ *   \param radius the radius of the shape the grid represents (the largest distance from `center` to the shape)
+ *   \param side_length the side of the cube
+ *   \param value the initial value of every sample
+ *   \throws std::invalid_argument unless `resolution > 0`, `side_length > 0` and `radius >= 0`.
   */
   Voxel_grid(std::size_t resolution, const Point_3& center, FT radius, FT side_length,
              double value = 0.)
@@ -233,7 +232,6 @@ private:
   std::vector<double> values_;
 };
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_VOXEL_GRID_H

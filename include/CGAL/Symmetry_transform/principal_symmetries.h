@@ -19,96 +19,39 @@
 
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformPrincipalRef
-
-Computes the principal symmetries of a triangle mesh from its reflective symmetry transform:
-the local maxima of `prst` above the thresholds \f$ t\,(1 - |r|/R) \f$ and \f$ l \f$, each
-refined by Iterative Symmetric Points (ISP) on the mesh, unstable ones dropped and duplicates
-merged, measured on the GEDT by `symmetry_measure()` (\ref SymmetryTransformPrincipal).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param prst its reflective symmetry transform, from `reflective_symmetry_transform(tm, np)`
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{number_of_refinement_samples}
-    \cgalParamDescription{the number of surface samples that ISP reflects}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{10000}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of ISP iterations of each stage of a refinement}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{20}
-  \cgalParamNEnd
-  \cgalParamNBegin{max_number_of_planes}
-    \cgalParamDescription{the largest number of planes returned}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{10}
-  \cgalParamNEnd
-  \cgalParamNBegin{symmetry_threshold}
-    \cgalParamDescription{\f$ t \f$, as a fraction of the symmetry measure of the strongest maximum}
-    \cgalParamType{`double`}
-    \cgalParamDefault{0.1}
-  \cgalParamNEnd
-  \cgalParamNBegin{laplacian_threshold}
-    \cgalParamDescription{\f$ l \f$, as a fraction of the negative Laplacian of the strongest maximum}
-    \cgalParamType{`double`}
-    \cgalParamDefault{0.1}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the surface samples}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print each candidate and its refinement on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the resolution \f$ n \f$ of the GEDT, whose width sets the Gaussian weights of ISP}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the width \f$ \sigma \f$ of the GEDT and of the weights of ISP, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the grid divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the principal symmetries, strongest first.
-\throws std::invalid_argument on the bad inputs of `gaussian_distance_transform()`, or if
-`number_of_refinement_samples` is 0.
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Computes the principal symmetries of a triangle mesh from its reflective symmetry transform:
+ * the local maxima of `prst` above the thresholds \f$ t\,(1 - |r|/R) \f$ and \f$ l \f$, each
+ * refined by Iterative Symmetric Points (ISP) on the mesh, unstable ones dropped and duplicates
+ * merged, measured on the GEDT by `symmetry_measure()` (\ref SymmetryTransformPrincipal).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param prst its reflective symmetry transform, from `reflective_symmetry_transform(tm, np)`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamRefinementSamples
+ *   \cgalParamIspIterations
+ *   \cgalParamMaxPlanes
+ *   \cgalParamsCandidateThresholds
+ *   \cgalParamRandomSeed{the seed of the surface samples}
+ *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the principal symmetries, strongest first.
+ * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform()`, or if
+ * `number_of_refinement_samples` is 0.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
@@ -125,107 +68,37 @@ principal_symmetries(
 }
 
 /*!
-\ingroup PkgSymmetryTransformPrincipalRef
-
-Computes the principal symmetries of a triangle mesh: its reflective symmetry transform by
-`reflective_symmetry_transform(tm, np)`, with fewer Monte Carlo samples by default, then
-`principal_symmetries(tm, prst, np)` (\ref SymmetryTransformPrincipal).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the transform is computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples of the transform: fewer than the
-                          transform's own default, as its maxima need only be located within a
-                          bin or two}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{500,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator of the transform}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_refinement_samples}
-    \cgalParamDescription{the number of surface samples that ISP reflects}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{10000}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of ISP iterations of each stage of a refinement}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{20}
-  \cgalParamNEnd
-  \cgalParamNBegin{max_number_of_planes}
-    \cgalParamDescription{the largest number of planes returned}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{10}
-  \cgalParamNEnd
-  \cgalParamNBegin{symmetry_threshold}
-    \cgalParamDescription{\f$ t \f$, as a fraction of the symmetry measure of the strongest maximum}
-    \cgalParamType{`double`}
-    \cgalParamDefault{0.1}
-  \cgalParamNEnd
-  \cgalParamNBegin{laplacian_threshold}
-    \cgalParamDescription{\f$ l \f$, as a fraction of the negative Laplacian of the strongest maximum}
-    \cgalParamType{`double`}
-    \cgalParamDefault{0.1}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the surface samples and of the transform}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print each candidate and its refinement on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the resolution \f$ n \f$ of the GEDT, whose width sets the Gaussian weights of ISP}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the width \f$ \sigma \f$ of the GEDT and of the weights of ISP, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the grid divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the principal symmetries, strongest first.
-\throws std::invalid_argument on the bad inputs of `gaussian_distance_transform()` and
-`reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Computes the principal symmetries of a triangle mesh: its reflective symmetry transform by
+ * `reflective_symmetry_transform(tm, np)`, with fewer Monte Carlo samples by default, then
+ * `principal_symmetries(tm, prst, np)` (\ref SymmetryTransformPrincipal).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPrstMethod
+ *   \cgalParamDetectionSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRefinementSamples
+ *   \cgalParamIspIterations
+ *   \cgalParamMaxPlanes
+ *   \cgalParamsCandidateThresholds
+ *   \cgalParamRandomSeed{the seed of the surface samples and of the transform}
+ *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the principal symmetries, strongest first.
+ * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform()` and
+ * `reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
@@ -235,106 +108,37 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
 }
 
 /*!
-\ingroup PkgSymmetryTransformPrincipalRef
-
-Computes the principal symmetries of a point set, as `detect_principal_symmetries()` does for
-a mesh, with ISP matching the reflected points to their nearest points (`CGAL::Kd_tree`) and
-fitting the plane to the pairs of points (\ref SymmetryTransformPrincipal).
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the transform is computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples of the transform: fewer than the
-                          transform's own default, as its maxima need only be located within a
-                          bin or two}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{500,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator of the transform}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_refinement_samples}
-    \cgalParamDescription{the number of points that ISP reflects}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{10000}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of ISP iterations of each stage of a refinement}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{20}
-  \cgalParamNEnd
-  \cgalParamNBegin{max_number_of_planes}
-    \cgalParamDescription{the largest number of planes returned}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{10}
-  \cgalParamNEnd
-  \cgalParamNBegin{symmetry_threshold}
-    \cgalParamDescription{\f$ t \f$, as a fraction of the symmetry measure of the strongest maximum}
-    \cgalParamType{`double`}
-    \cgalParamDefault{0.1}
-  \cgalParamNEnd
-  \cgalParamNBegin{laplacian_threshold}
-    \cgalParamDescription{\f$ l \f$, as a fraction of the negative Laplacian of the strongest maximum}
-    \cgalParamType{`double`}
-    \cgalParamDefault{0.1}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the points that ISP reflects and of the transform}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print each candidate and its refinement on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the resolution \f$ n \f$ of the GEDT, whose width sets the Gaussian weights of ISP}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the width \f$ \sigma \f$ of the GEDT and of the weights of ISP, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the grid divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{point_map}
-    \cgalParamDescription{a property map associating points to the elements of `points`}
-    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
-    \cgalParamDefault{`CGAL::Identity_property_map`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the value type of the point map, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the principal symmetries, strongest first.
-\throws std::invalid_argument on the bad inputs of `gaussian_distance_transform_of_points()`
-and `reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Computes the principal symmetries of a point set, as `detect_principal_symmetries()` does for
+ * a mesh, with ISP matching the reflected points to their nearest points (`CGAL::Kd_tree`) and
+ * fitting the plane to the pairs of points (\ref SymmetryTransformPrincipal).
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPrstMethod
+ *   \cgalParamDetectionSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRefinementSamples
+ *   \cgalParamIspIterations
+ *   \cgalParamMaxPlanes
+ *   \cgalParamsCandidateThresholds
+ *   \cgalParamRandomSeed{the seed of the points that ISP reflects and of the transform}
+ *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the principal symmetries, strongest first.
+ * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform_of_points()`
+ * and `reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
@@ -344,73 +148,34 @@ detect_principal_symmetries_of_points(const PointRange& points, const NamedParam
 }
 
 /*!
-\ingroup PkgSymmetryTransformPrincipalRef
-
-Refines a rough plane of symmetry of a triangle mesh by Iterative Symmetric Points, as
-`principal_symmetries()` does, without a transform: the plane converges to the nearest local
-maximum of the Gaussian-weighted support. A plane that is already an exact local symmetry stays
-where it is (\ref SymmetryTransformPrincipal).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param plane the starting plane
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{number_of_refinement_samples}
-    \cgalParamDescription{the number of surface samples that ISP reflects}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{10000}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of ISP iterations of each stage of a refinement}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{20}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the surface samples}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the resolution \f$ n \f$ of the GEDT, whose width sets the Gaussian weights of ISP}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the width \f$ \sigma \f$ of the GEDT and of the weights of ISP, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the grid divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected
-sample lies near the surface.
-\throws std::invalid_argument if `plane` is degenerate, on the bad inputs of
-`gaussian_distance_transform()`, or if `number_of_refinement_samples` is 0.
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Refines a rough plane of symmetry of a triangle mesh by Iterative Symmetric Points, as
+ * `principal_symmetries()` does, without a transform: the plane converges to the nearest local
+ * maximum of the Gaussian-weighted support. A plane that is already an exact local symmetry stays
+ * where it is (\ref SymmetryTransformPrincipal).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param plane the starting plane
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamRefinementSamples
+ *   \cgalParamIspIterations
+ *   \cgalParamRandomSeed{the seed of the surface samples}
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected
+ * sample lies near the surface.
+ * \throws std::invalid_argument if `plane` is degenerate, on the bad inputs of
+ * `gaussian_distance_transform()`, or if `number_of_refinement_samples` is 0.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3
@@ -431,59 +196,32 @@ refine_symmetry_plane(const TriangleMesh& tm,
 }
 
 /*!
-\ingroup PkgSymmetryTransformPrincipalRef
-
-Computes how much each face of a triangle mesh supports the reflection through `plane`
-(thesis, Figure 3.7): the mean of \f$ \exp(-d^2/2\sigma^2) \f$ over four points of the face,
-\f$ d \f$ the distance from the reflected point to the mesh and \f$ \sigma \f$ the width of the
-GEDT. 1 means the face is mirrored onto the surface, 0 that its mirror image is far from it
-(\ref SymmetryTransformPrincipal).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam FaceSupportMap a model of `WritablePropertyMap` with the face descriptor as key and `double` as value
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param plane the plane of reflection
-\param face_support_map receives the support of each face, in \f$ [0,1] \f$
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the resolution \f$ n \f$ of the GEDT that sets \f$ \sigma \f$}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the width \f$ \sigma \f$ of the GEDT, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the grid divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the supported fraction of the area: the area-weighted mean of the face supports.
-\throws std::invalid_argument if `plane` is degenerate, or on the bad inputs of `gaussian_distance_transform()`.
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Computes how much each face of a triangle mesh supports the reflection through `plane`
+ * (thesis, Figure 3.7): the mean of \f$ \exp(-d^2/2\sigma^2) \f$ over four points of the face,
+ * \f$ d \f$ the distance from the reflected point to the mesh and \f$ \sigma \f$ the width of the
+ * GEDT. 1 means the face is mirrored onto the surface, 0 that its mirror image is far from it
+ * (\ref SymmetryTransformPrincipal).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam FaceSupportMap a model of `WritablePropertyMap` with the face descriptor as key and `double` as value
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param plane the plane of reflection
+ * \param face_support_map receives the support of each face, in \f$ [0,1] \f$
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the supported fraction of the area: the area-weighted mean of the face supports.
+ * \throws std::invalid_argument if `plane` is degenerate, or on the bad inputs of `gaussian_distance_transform()`.
 */
 template <typename TriangleMesh, typename FaceSupportMap,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -506,7 +244,6 @@ double symmetry_support(const TriangleMesh& tm,
   return supported / total;
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_PRINCIPAL_SYMMETRIES_H

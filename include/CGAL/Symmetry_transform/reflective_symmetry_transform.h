@@ -25,12 +25,11 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-How `reflective_symmetry_transform()` computes the symmetry measures of the bins.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ * How `reflective_symmetry_transform()` computes the symmetry measures of the bins.
 */
 enum class Reflective_symmetry_method {
   /// Monte Carlo sampling of points drawn proportionally to \f$ f \f$, with the estimator given by
@@ -42,8 +41,8 @@ enum class Reflective_symmetry_method {
 };
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-The Monte Carlo estimator used by `Reflective_symmetry_method::MONTE_CARLO`.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ * The Monte Carlo estimator used by `Reflective_symmetry_method::MONTE_CARLO`.
 */
 enum class Monte_carlo_estimator {
   /// The thesis's: both points drawn proportionally to \f$ f \f$, each pair votes
@@ -60,24 +59,24 @@ enum class Monte_carlo_estimator {
 };
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-The Planar Reflective Symmetry Transform (PRST) of a function \f$ f \f$ (usually the GEDT of a
-shape): the symmetry measure
-\f$ SM(\gamma) = \int f(x) f(\gamma(x))\,dx / \int f^2 \in [0,1] \f$ of every plane
-\f$ \gamma \f$, tabulated on \f$ n \times n \times n \f$ bins.
-
-A plane is \f$ \{x : \mathbf{n}\cdot(x - c) = r\} \f$, with \f$ c \f$ the centre of mass of the
-shape and the unit normal
-\f$ \mathbf{n}(\theta,\phi) = (\sin\theta\cos\phi, \sin\theta\sin\phi, \cos\theta) \f$,
-\f$ \theta \in [0,\pi/2] \f$, \f$ \phi \in [0, 2\pi) \f$, \f$ r \in [-R, R] \f$ (\f$ R \f$ the
-radius of the shape). Bin `(i,j,k)` covers
-\f$ [i, i+1)\,\Delta\theta \times [j, j+1)\,\Delta\phi \times (-R + [k, k+1)\,\Delta r) \f$
-with \f$ \Delta\theta = \pi/2n \f$, \f$ \Delta\phi = 2\pi/n \f$, \f$ \Delta r = 2R/n \f$.
-In this parameter space \f$ \phi \f$ wraps around, and a plane on the equator is also
-\f$ (\pi/2, \phi + \pi, -r) \f$.
-
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * The Planar Reflective Symmetry Transform (PRST) of a function \f$ f \f$ (usually the GEDT of a
+ * shape): the symmetry measure
+ * \f$ SM(\gamma) = \int f(x) f(\gamma(x))\,dx / \int f^2 \in [0,1] \f$ of every plane
+ * \f$ \gamma \f$, tabulated on \f$ n \times n \times n \f$ bins.
+ *
+ * A plane is \f$ \{x : \mathbf{n}\cdot(x - c) = r\} \f$, with \f$ c \f$ the centre of mass of the
+ * shape and the unit normal
+ * \f$ \mathbf{n}(\theta,\phi) = (\sin\theta\cos\phi, \sin\theta\sin\phi, \cos\theta) \f$,
+ * \f$ \theta \in [0,\pi/2] \f$, \f$ \phi \in [0, 2\pi) \f$, \f$ r \in [-R, R] \f$ (\f$ R \f$ the
+ * radius of the shape). Bin `(i,j,k)` covers
+ * \f$ [i, i+1)\,\Delta\theta \times [j, j+1)\,\Delta\phi \times (-R + [k, k+1)\,\Delta r) \f$
+ * with \f$ \Delta\theta = \pi/2n \f$, \f$ \Delta\phi = 2\pi/n \f$, \f$ \Delta r = 2R/n \f$.
+ * In this parameter space \f$ \phi \f$ wraps around, and a plane on the equator is also
+ * \f$ (\pi/2, \phi + \pi, -r) \f$.
+ *
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 class Reflective_symmetry_transform
@@ -193,12 +192,12 @@ public:
   }
 
   /*!
-  Writes to `out` every bin of positive value that exceeds those of its 26 neighbours
-  (through the wraps of \f$ \phi \f$, the pole and the equator; along \f$ r \f$ the bins at
-  \f$ \pm R \f$ have fewer neighbours), strongest first, and returns the past-the-end iterator.
-  \tparam OutputIterator an output iterator accepting `Bin`
-  \param out where the bins are written
-  \returns `out` past the last bin written
+ *   Writes to `out` every bin of positive value that exceeds those of its 26 neighbours
+ *   (through the wraps of \f$ \phi \f$, the pole and the equator; along \f$ r \f$ the bins at
+ *   \f$ \pm R \f$ have fewer neighbours), strongest first, and returns the past-the-end iterator.
+ *   \tparam OutputIterator an output iterator accepting `Bin`
+ *   \param out where the bins are written
+ *   \returns `out` past the last bin written
   */
   template <typename OutputIterator>
   OutputIterator local_maxima(OutputIterator out) const
@@ -287,57 +286,31 @@ private:
 };
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-Computes the Planar Reflective Symmetry Transform of a function sampled on a grid, usually
-the GEDT of a shape from `gaussian_distance_transform()`, with as many bins along
-\f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$ as the grid has samples along an axis.
-
-\tparam GeomTraits a model of `Kernel`
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param f the function; its `center()` and `radius()` define the offsets of the planes
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\returns the transform, with `f.resolution()` bins along each axis, `center()` and `radius()` those of `f`
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the bins are computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
-                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
-                          plane for `BOUNDED_WEIGHT`}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print the time taken on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
-zero, or `number_of_samples` is 0 with the Monte Carlo method.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * Computes the Planar Reflective Symmetry Transform of a function sampled on a grid, usually
+ * the GEDT of a shape from `gaussian_distance_transform()`, with as many bins along
+ * \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$ as the grid has samples along an axis.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param f the function; its `center()` and `radius()` define the offsets of the planes
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \returns the transform, with `f.resolution()` bins along each axis, `center()` and `radius()` those of `f`
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
+ * zero, or `number_of_samples` is 0 with the Monte Carlo method.
 */
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<GeomTraits>
@@ -390,83 +363,33 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
 }
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-Computes the Planar Reflective Symmetry Transform of a triangle mesh: its GEDT by
-`gaussian_distance_transform(tm, np)`, then `reflective_symmetry_transform()` of that grid.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width; even}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the bins are computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
-                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
-                          plane for `BOUNDED_WEIGHT`}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print the time taken on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
-bins along each axis, centred on the centre of mass of `tm`
-
-\throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * Computes the Planar Reflective Symmetry Transform of a triangle mesh: its GEDT by
+ * `gaussian_distance_transform(tm, np)`, then `reflective_symmetry_transform()` of that grid.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the input mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
+ * bins along each axis, centred on the centre of mass of `tm`
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -476,81 +399,32 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
 }
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-Computes the Planar Reflective Symmetry Transform of a point set: its GEDT by
-`gaussian_distance_transform_of_points(points, np)`, then `reflective_symmetry_transform()` of that grid.
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width; even}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{point_map}
-    \cgalParamDescription{a property map associating points to the elements of `points`}
-    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
-    \cgalParamDefault{`CGAL::Identity_property_map`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the bins are computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
-                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
-                          plane for `BOUNDED_WEIGHT`}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print the time taken on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
-
-\throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * Computes the Planar Reflective Symmetry Transform of a point set: its GEDT by
+ * `gaussian_distance_transform_of_points(points, np)`, then `reflective_symmetry_transform()` of that grid.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the input points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
@@ -559,7 +433,6 @@ reflective_symmetry_transform_of_points(const PointRange& points, const NamedPar
   return reflective_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H

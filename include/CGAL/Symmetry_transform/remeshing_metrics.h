@@ -21,12 +21,11 @@
 #include <algorithm>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRemeshingRef
-The distance between two surfaces, measured from samples of each to the other.
+ * \ingroup PkgSymmetryTransformRemeshingRef
+ * The distance between two surfaces, measured from samples of each to the other.
 */
 struct Approximation_error
 {
@@ -37,56 +36,48 @@ struct Approximation_error
 };
 
 /*!
-\ingroup PkgSymmetryTransformRemeshingRef
-
-Measures how far two triangle meshes are from each other (such as an input mesh and its
-approximation): area-uniform samples of each mesh are matched to their closest points on the
-other, as `CGAL::Polygon_mesh_processing::approximate_Hausdorff_distance()` does one way.
-
-\tparam TriangleMesh1 a model of `FaceListGraph` whose faces are triangles
-\tparam TriangleMesh2 a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters1 a sequence of \ref bgl_namedparameters "Named Parameters"
-\tparam NamedParameters2 a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm1 the first mesh
-\param tm2 the second mesh
-\param np1 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-\param np2 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin{Named Parameters of np1}
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the points of the vertices of `tm1` (those of `tm2` are given in `np2`)}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh1>::%vertex_descriptor` as key and a `Point_3` as value}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm1)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_points_on_faces}
-    \cgalParamDescription{the number of samples on each of the two meshes}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{20000}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the samples of both meshes: the result is deterministic for a seed}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the threads that match the samples of each mesh to their closest points (the result does not depend on it)}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\cgalNamedParamsBegin{Named Parameters of np2}
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the points of the vertices of `tm2` (its samples follow the options of `np1`)}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh2>::%vertex_descriptor` as key and a `Point_3` as value}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm2)`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the root mean square and the largest of the distances of both sets of samples.
-\throws std::invalid_argument if a mesh has no face, a face that is not a triangle, a non-finite
-coordinate, or only degenerate faces.
+ * \ingroup PkgSymmetryTransformRemeshingRef
+ *
+ * Measures how far two triangle meshes are from each other (such as an input mesh and its
+ * approximation): area-uniform samples of each mesh are matched to their closest points on the
+ * other, as `CGAL::Polygon_mesh_processing::approximate_Hausdorff_distance()` does one way.
+ *
+ * \tparam TriangleMesh1 a model of `FaceListGraph` whose faces are triangles
+ * \tparam TriangleMesh2 a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters1 a sequence of \ref bgl_namedparameters "Named Parameters"
+ * \tparam NamedParameters2 a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm1 the first mesh
+ * \param tm2 the second mesh
+ * \param np1 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ * \param np2 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin{Named Parameters of np1}
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the points of the vertices of `tm1` (those of `tm2` are given in `np2`)}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh1>::%vertex_descriptor` as key and a `Point_3` as value}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm1)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_points_on_faces}
+ *     \cgalParamDescription{the number of samples on each of the two meshes}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{20000}
+ *   \cgalParamNEnd
+ *   \cgalParamRandomSeed{the seed of the samples of both meshes: the result is deterministic for a seed}
+ *   \cgalParamThreads{the threads that match the samples of each mesh to their closest points (the result does not depend on it)}
+ * \cgalNamedParamsEnd
+ *
+ * \cgalNamedParamsBegin{Named Parameters of np2}
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{the points of the vertices of `tm2` (its samples follow the options of `np1`)}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh2>::%vertex_descriptor` as key and a `Point_3` as value}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm2)`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ *
+ * \returns the root mean square and the largest of the distances of both sets of samples.
+ * \throws std::invalid_argument if a mesh has no face, a face that is not a triangle, a non-finite
+ * coordinate, or only degenerate faces.
 */
 template <typename TriangleMesh1, typename TriangleMesh2, typename NamedParameters1 = parameters::Default_named_parameters,
           typename NamedParameters2 = parameters::Default_named_parameters>
@@ -104,49 +95,33 @@ Approximation_error approximation_error(const TriangleMesh1& tm1, const Triangle
 }
 
 /*!
-\ingroup PkgSymmetryTransformRemeshingRef
-
-Measures how far a triangle mesh is from its mirror image through `plane`, the symmetry error
-of the thesis (Section 5.1.3): the root mean square of the distances from the reflections of
-area-uniform samples of the mesh to the mesh; 0 for an exact symmetry.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param plane the plane of reflection
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{number_of_points_on_faces}
-    \cgalParamDescription{the number of samples of `tm`, whose reflections are matched}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{20000}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the samples: the result is deterministic for a seed}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the threads that match the reflected samples to their closest points (the result does not depend on it)}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the points of the vertices of `tm`, sampled and reflected}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and `geom_traits::Point_3` as value}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the type of `plane`; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the root mean square distance, in the units of the mesh.
-\throws std::invalid_argument if `plane` is degenerate, or on the bad meshes of `approximation_error()`.
+ * \ingroup PkgSymmetryTransformRemeshingRef
+ *
+ * Measures how far a triangle mesh is from its mirror image through `plane`, the symmetry error
+ * of the thesis (Section 5.1.3): the root mean square of the distances from the reflections of
+ * area-uniform samples of the mesh to the mesh; 0 for an exact symmetry.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param plane the plane of reflection
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{number_of_points_on_faces}
+ *     \cgalParamDescription{the number of samples of `tm`, whose reflections are matched}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{20000}
+ *   \cgalParamNEnd
+ *   \cgalParamRandomSeed{the seed of the samples: the result is deterministic for a seed}
+ *   \cgalParamThreads{the threads that match the reflected samples to their closest points (the result does not depend on it)}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the root mean square distance, in the units of the mesh.
+ * \throws std::invalid_argument if `plane` is degenerate, or on the bad meshes of `approximation_error()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_error(const TriangleMesh& tm,
@@ -161,64 +136,44 @@ double symmetry_error(const TriangleMesh& tm,
 }
 
 /*!
-\ingroup PkgSymmetryTransformRemeshingRef
-
-Measures the symmetry error of a triangle mesh in the region where another mesh (typically the
-original of a remeshed surface) is symmetric: as `symmetry_error(tm, plane, np)`, but over the
-samples of `tm` whose mirror images lie within `max_distance` of `reference`. This leaves out
-the parts of an approximately or partially symmetric shape that the plane does not map (a
-turned head, a missing limb), whose error no remeshing can remove.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam ReferenceMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters1 a sequence of \ref bgl_namedparameters "Named Parameters"
-\tparam NamedParameters2 a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param plane the plane of reflection
-\param reference the mesh whose symmetric region is measured
-\param max_distance the largest distance from a mirrored sample of `tm` to `reference` in the region
-\param np1 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-\param np2 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin{Named Parameters of np1}
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the type of `plane`; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the points of the vertices of `tm`, whose samples are reflected}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and `geom_traits::Point_3` as value}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the threads that match the reflected samples, on `tm` and on `reference`, to their closest points (the result does not depend on it)}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_points_on_faces}
-    \cgalParamDescription{the number of samples of `tm`}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{20000}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the samples of `tm`: the result is deterministic for a seed}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\cgalNamedParamsBegin{Named Parameters of np2}
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the points of the vertices of `reference`}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<ReferenceMesh>::%vertex_descriptor` as key and a `Point_3` as value}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, reference)`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the root mean square distance over the region (0 if the region is empty).
-\throws std::invalid_argument on the bad input of `symmetry_error()`, for `tm` or `reference`.
+ * \ingroup PkgSymmetryTransformRemeshingRef
+ *
+ * Measures the symmetry error of a triangle mesh in the region where another mesh (typically the
+ * original of a remeshed surface) is symmetric: as `symmetry_error(tm, plane, np)`, but over the
+ * samples of `tm` whose mirror images lie within `max_distance` of `reference`. This leaves out
+ * the parts of an approximately or partially symmetric shape that the plane does not map (a
+ * turned head, a missing limb), whose error no remeshing can remove.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam ReferenceMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters1 a sequence of \ref bgl_namedparameters "Named Parameters"
+ * \tparam NamedParameters2 a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param plane the plane of reflection
+ * \param reference the mesh whose symmetric region is measured
+ * \param max_distance the largest distance from a mirrored sample of `tm` to `reference` in the region
+ * \param np1 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ * \param np2 an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin{Named Parameters of np1}
+ *   \cgalParamGeomTraits
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamThreads{the threads that match the reflected samples\, on `tm` and on `reference`\, to their closest points (the result does not depend on it)}
+ *   \cgalParamNBegin{number_of_points_on_faces}
+ *     \cgalParamDescription{the number of samples of `tm`}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{20000}
+ *   \cgalParamNEnd
+ *   \cgalParamRandomSeed{the seed of the samples of `tm`: the result is deterministic for a seed}
+ * \cgalNamedParamsEnd
+ *
+ * \cgalNamedParamsBegin{Named Parameters of np2}
+ *   \cgalParamVertexPointMap{reference,ReferenceMesh}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the root mean square distance over the region (0 if the region is empty).
+ * \throws std::invalid_argument on the bad input of `symmetry_error()`, for `tm` or `reference`.
 */
 template <typename TriangleMesh, typename ReferenceMesh, typename NamedParameters1 = parameters::Default_named_parameters,
           typename NamedParameters2 = parameters::Default_named_parameters>
@@ -242,41 +197,29 @@ double symmetry_error(const TriangleMesh& tm,
 }
 
 /*!
-\ingroup PkgSymmetryTransformRemeshingRef
-
-Computes, for each face of a triangle mesh, the distance from the mirror image of its centroid
-through `plane` to the mesh (0 where the mesh is symmetric), for instance to colour a remeshed
-surface as in the thesis's Figure 5.6.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam FaceErrorMap a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and `double` as value
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param plane the plane of reflection
-\param face_error_map receives the distance of each face
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class, of which only the type is used (it names the type of `plane`); all computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the points of the vertices of `tm`, whose face centroids are reflected}
-    \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and `geom_traits::Point_3` as value}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads that look for the points of `tm` nearest to the reflected centroids; the result does not depend on it}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the largest distance.
-\throws std::invalid_argument on the bad input of `symmetry_error()`.
+ * \ingroup PkgSymmetryTransformRemeshingRef
+ *
+ * Computes, for each face of a triangle mesh, the distance from the mirror image of its centroid
+ * through `plane` to the mesh (0 where the mesh is symmetric), for instance to colour a remeshed
+ * surface as in the thesis's Figure 5.6.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam FaceErrorMap a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and `double` as value
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param plane the plane of reflection
+ * \param face_error_map receives the distance of each face
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamGeomTraits
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamThreads{the number of threads that look for the points of `tm` nearest to the reflected centroids; the result does not depend on it}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the largest distance.
+ * \throws std::invalid_argument on the bad input of `symmetry_error()`.
 */
 template <typename TriangleMesh, typename FaceErrorMap, typename NamedParameters = parameters::Default_named_parameters>
 double face_symmetry_errors(const TriangleMesh& tm,
@@ -299,7 +242,6 @@ double face_symmetry_errors(const TriangleMesh& tm,
   return largest;
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_REMESHING_METRICS_H

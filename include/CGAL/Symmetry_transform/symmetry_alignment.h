@@ -5,6 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRY_ALIGNMENT_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_ALIGNMENT_H
 
+#include <CGAL/Symmetry_transform/Symmetry_frame.h>
 #include <CGAL/Symmetry_transform/internal/alignment/frame_rules.h>
 #include <CGAL/Symmetry_transform/internal/alignment/mass_distribution.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
@@ -13,63 +14,32 @@
 
 #include <array>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformAlignmentRef
-
-A canonical coordinate frame of a shape: an origin and three unit, pairwise orthogonal axes
-forming a right-handed basis (`axes[2]` \f$ = \f$ `axes[0]` \f$ \times \f$ `axes[1]`).
-
-Built by `symmetry_frame()` (centre of symmetry and principal symmetry axes, thesis section 4.1)
-or by `pca_frame()` (centre of mass and principal axes of inertia, the classical baseline);
-`to_canonical()` gives the rigid motion that takes the frame to the origin and the coordinate axes.
-
-\tparam GeomTraits a model of `Kernel`
-*/
-template <typename GeomTraits>
-struct Symmetry_frame
-{
-  /// The origin of the frame: the centre of symmetry, or the centre of mass.
-  typename GeomTraits::Point_3 center;
-  /// The three axes, unit and right-handed, most significant first.
-  std::array<typename GeomTraits::Vector_3, 3> axes;
-};
-
-/*!
-\ingroup PkgSymmetryTransformAlignmentRef
-
-Computes the symmetry frame of a triangle mesh (thesis, section 4.1): the centre of symmetry and
-the axes of the principal symmetries that `detect_principal_symmetries(tm, np)` finds. The first
-axis is the normal of the strongest plane, the second that of the strongest plane nearly
-perpendicular to it, the third their cross product, each turned towards more mass; a plane missing
-among the principal ones is searched in the transform (see \ref SymmetryTransformAlignment).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among those listed
-          below, and those of `detect_principal_symmetries()`, to which they are passed on
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`, read for the mass and by the detection}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
-\throws std::invalid_argument on the bad inputs of `detect_principal_symmetries()` (empty mesh,
-        non-triangle face, all faces degenerate, NaN or infinite coordinate, ...).
+ * \ingroup PkgSymmetryTransformAlignmentRef
+ *
+ * Computes the symmetry frame of a triangle mesh (thesis, section 4.1): the centre of symmetry and
+ * the axes of the principal symmetries that `detect_principal_symmetries(tm, np)` finds. The first
+ * axis is the normal of the strongest plane, the second that of the strongest plane nearly
+ * perpendicular to it, the third their cross product, each turned towards more mass; a plane missing
+ * among the principal ones is searched in the transform (see \ref SymmetryTransformAlignment).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among those listed
+ *           below, and those of `detect_principal_symmetries()`, to which they are passed on
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamGeomTraits
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
+ * \throws std::invalid_argument on the bad inputs of `detect_principal_symmetries()` (empty mesh,
+ *         non-triangle face, all faces degenerate, NaN or infinite coordinate, ...).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_frame<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -82,36 +52,28 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
 }
 
 /*!
-\ingroup PkgSymmetryTransformAlignmentRef
-
-Computes the symmetry frame of a point set, by the rules of `symmetry_frame()`, from the
-principal symmetries that `detect_principal_symmetries_of_points(points, np)` finds. The mass is
-that of the points, each of weight 1: the centre of mass is their mean, and the means that orient
-the axes are means over the points.
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those listed below,
-          and those of `detect_principal_symmetries_of_points()`, which are passed on to it
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{point_map}
-    \cgalParamDescription{a property map associating points to the elements of the point range, read for the mass and by the detection}
-    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
-    \cgalParamDefault{`CGAL::Identity_property_map`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the value type of the point map, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
-\throws std::invalid_argument on the bad inputs of `detect_principal_symmetries_of_points()`
-        (empty range, a single point, NaN or infinite coordinate, ...).
+ * \ingroup PkgSymmetryTransformAlignmentRef
+ *
+ * Computes the symmetry frame of a point set, by the rules of `symmetry_frame()`, from the
+ * principal symmetries that `detect_principal_symmetries_of_points(points, np)` finds. The mass is
+ * that of the points, each of weight 1: the centre of mass is their mean, and the means that orient
+ * the axes are means over the points.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those listed below,
+ *           and those of `detect_principal_symmetries_of_points()`, which are passed on to it
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
+ * \throws std::invalid_argument on the bad inputs of `detect_principal_symmetries_of_points()`
+ *         (empty range, a single point, NaN or infinite coordinate, ...).
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
@@ -124,37 +86,28 @@ symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = p
 }
 
 /*!
-\ingroup PkgSymmetryTransformAlignmentRef
-
-Computes the classical canonical frame of a triangle mesh, the baseline of `symmetry_frame()`:
-the area-weighted centre of mass of its surface and its principal axes of inertia, the
-eigenvectors of the covariance \f$ \int (x - c)(x - c)^T \, dA \f$, largest variance first,
-oriented by the rules of `symmetry_frame()` about the centre of mass. Where two variances are
-equal (a shape of revolution, a cube), the corresponding axes are arbitrary.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among those listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type of the vertex point map, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the frame of the centre of mass and the principal axes.
-\throws std::invalid_argument on an empty mesh, a non-triangle face, a mesh whose faces are all
-        degenerate, or a NaN or infinite coordinate.
+ * \ingroup PkgSymmetryTransformAlignmentRef
+ *
+ * Computes the classical canonical frame of a triangle mesh, the baseline of `symmetry_frame()`:
+ * the area-weighted centre of mass of its surface and its principal axes of inertia, the
+ * eigenvectors of the covariance \f$ \int (x - c)(x - c)^T \, dA \f$, largest variance first,
+ * oriented by the rules of `symmetry_frame()` about the centre of mass. Where two variances are
+ * equal (a shape of revolution, a cube), the corresponding axes are arbitrary.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among those listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the frame of the centre of mass and the principal axes.
+ * \throws std::invalid_argument on an empty mesh, a non-triangle face, a mesh whose faces are all
+ *         degenerate, or a NaN or infinite coordinate.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_frame<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -165,34 +118,26 @@ pca_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::defaul
 }
 
 /*!
-\ingroup PkgSymmetryTransformAlignmentRef
-
-Computes the classical canonical frame of a point set, as `pca_frame()` does for a mesh: the
-mean of the points and the eigenvectors of their covariance matrix, largest variance first,
-oriented by the rules of `symmetry_frame()` (with means over the points).
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters", those below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the type of the points, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{point_map}
-    \cgalParamDescription{a property map associating points to the elements of the point range}
-    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
-    \cgalParamDefault{`CGAL::Identity_property_map`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the frame of the centre of mass and the principal axes.
-\throws std::invalid_argument on an empty range, a single point (repeated or not), or a NaN or
-        infinite coordinate.
+ * \ingroup PkgSymmetryTransformAlignmentRef
+ *
+ * Computes the classical canonical frame of a point set, as `pca_frame()` does for a mesh: the
+ * mean of the points and the eigenvectors of their covariance matrix, largest variance first,
+ * oriented by the rules of `symmetry_frame()` (with means over the points).
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters", those below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamGeomTraits
+ *   \cgalParamPointMap
+ * \cgalNamedParamsEnd
+ *
+ * \returns the frame of the centre of mass and the principal axes.
+ * \throws std::invalid_argument on an empty range, a single point (repeated or not), or a NaN or
+ *         infinite coordinate.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
@@ -203,15 +148,15 @@ pca_frame_of_points(const PointRange& points, const NamedParameters& np = parame
 }
 
 /*!
-\ingroup PkgSymmetryTransformAlignmentRef
-
-The rigid motion that takes a frame to the canonical one: its centre to the origin and its
-axes to the coordinate axes, \f$ x \mapsto (a_0 \cdot (x - c),\ a_1 \cdot (x - c),\ a_2 \cdot (x - c)) \f$.
-Apply it to a mesh with `CGAL::Polygon_mesh_processing::transform()`.
-
-\tparam GeomTraits a model of `Kernel`
-\param frame a frame, from `symmetry_frame()` or `pca_frame()` (unit, orthogonal, right-handed axes)
-\returns the transformation, a rotation (determinant 1) followed by a translation.
+ * \ingroup PkgSymmetryTransformAlignmentRef
+ *
+ * The rigid motion that takes a frame to the canonical one: its centre to the origin and its
+ * axes to the coordinate axes, \f$ x \mapsto (a_0 \cdot (x - c),\ a_1 \cdot (x - c),\ a_2 \cdot (x - c)) \f$.
+ * Apply it to a mesh with `CGAL::Polygon_mesh_processing::transform()`.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ * \param frame a frame, from `symmetry_frame()` or `pca_frame()` (unit, orthogonal, right-handed axes)
+ * \returns the transformation, a rotation (determinant 1) followed by a translation.
 */
 template <typename GeomTraits>
 typename GeomTraits::Aff_transformation_3 to_canonical(const Symmetry_frame<GeomTraits>& frame)
@@ -224,7 +169,6 @@ typename GeomTraits::Aff_transformation_3 to_canonical(const Symmetry_frame<Geom
                                                    a[2].x(), a[2].y(), a[2].z(), FT(-(a[2] * c)));
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_SYMMETRY_ALIGNMENT_H

@@ -23,28 +23,27 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformMatchingRef
-
-The symmetry descriptor of a shape, for matching (thesis, chapter 4): its Planar Reflective
-Symmetry Transform (PRST) and its Gaussian Euclidean Distance Transform (GEDT), both on
-\f$ n \times n \times n \f$ bins, stored contiguously as `float` so that comparing two
-descriptors reads little memory (two \f$ 32^3 \f$ descriptors: 512 KiB).
-
-The descriptors are compared as computed, in the shapes' own coordinates (the PRST bins are
-measured in the directions of the coordinate axes, the GEDT grid is an axis-aligned cube around
-the centre of mass, scaled to the shape's radius): the shapes must be aligned first, for
-instance each moved by `to_canonical(symmetry_frame(tm))` (see symmetry_alignment.h). Both
-parts are invariant under translation and scaling.
-
-Descriptors are computed by `symmetry_descriptor()` or `symmetry_descriptor_of_points()`,
-compared by `reflective_symmetry_descriptor_distance()`, `gedt_distance()` and `descriptor_distance()`,
-and saved with `save()` so that a collection is indexed once.
-
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The symmetry descriptor of a shape, for matching (thesis, chapter 4): its Planar Reflective
+ * Symmetry Transform (PRST) and its Gaussian Euclidean Distance Transform (GEDT), both on
+ * \f$ n \times n \times n \f$ bins, stored contiguously as `float` so that comparing two
+ * descriptors reads little memory (two \f$ 32^3 \f$ descriptors: 512 KiB).
+ *
+ * The descriptors are compared as computed, in the shapes' own coordinates (the PRST bins are
+ * measured in the directions of the coordinate axes, the GEDT grid is an axis-aligned cube around
+ * the centre of mass, scaled to the shape's radius): the shapes must be aligned first, for
+ * instance each moved by `to_canonical(symmetry_frame(tm))` (see symmetry_alignment.h). Both
+ * parts are invariant under translation and scaling.
+ *
+ * Descriptors are computed by `symmetry_descriptor()` or `symmetry_descriptor_of_points()`,
+ * compared by `reflective_symmetry_descriptor_distance()`, `gedt_distance()` and `descriptor_distance()`,
+ * and saved with `save()` so that a collection is indexed once.
+ *
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 class Symmetry_descriptor
@@ -133,20 +132,20 @@ private:
 };
 
 /*!
-\ingroup PkgSymmetryTransformMatchingRef
-
-The distance between the PRSTs of two descriptors (thesis, section 4.2): the L² difference of
-the bin values, each bin weighted by \f$ \sqrt{\sin\theta} \f$ (\f$ \theta \f$ at its centre,
-the angle of the plane normals from the \f$ z \f$ axis) so that every direction of normals
-counts as much as its area on the sphere of directions would make it count, on a square root:
-\f[ d_{SM}(a, b) = \sqrt{\frac{\sum_{\text{bins}} \sqrt{\sin\theta}\,(SM_a - SM_b)^2}{\sum_{\text{bins}} \sqrt{\sin\theta}}}. \f]
-Normalised by the sum of the weights, it is the weighted root mean square of the differences
-of the symmetry measures (in \f$ [0, 1] \f$): a number without unit, comparable across
-resolutions. Symmetric, zero for equal descriptors, and it satisfies the triangle inequality.
-
-\param a,b two descriptors of the same resolution
-\returns \f$ d_{SM}(a, b) \in [0, 1] \f$
-\throws std::invalid_argument if the resolutions differ or the descriptors are empty.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The distance between the PRSTs of two descriptors (thesis, section 4.2): the L² difference of
+ * the bin values, each bin weighted by \f$ \sqrt{\sin\theta} \f$ (\f$ \theta \f$ at its centre,
+ * the angle of the plane normals from the \f$ z \f$ axis) so that every direction of normals
+ * counts as much as its area on the sphere of directions would make it count, on a square root:
+ * \f[ d_{SM}(a, b) = \sqrt{\frac{\sum_{\text{bins}} \sqrt{\sin\theta}\,(SM_a - SM_b)^2}{\sum_{\text{bins}} \sqrt{\sin\theta}}}. \f]
+ * Normalised by the sum of the weights, it is the weighted root mean square of the differences
+ * of the symmetry measures (in \f$ [0, 1] \f$): a number without unit, comparable across
+ * resolutions. Symmetric, zero for equal descriptors, and it satisfies the triangle inequality.
+ *
+ * \param a,b two descriptors of the same resolution
+ * \returns \f$ d_{SM}(a, b) \in [0, 1] \f$
+ * \throws std::invalid_argument if the resolutions differ or the descriptors are empty.
 */
 template <typename GeomTraits>
 double reflective_symmetry_descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_descriptor<GeomTraits>& b)
@@ -157,16 +156,16 @@ double reflective_symmetry_descriptor_distance(const Symmetry_descriptor<GeomTra
 }
 
 /*!
-\ingroup PkgSymmetryTransformMatchingRef
-
-The distance between the GEDTs of two descriptors: the L² norm of the difference of the
-samples, \f$ d_{G}(a, b) = \sqrt{\sum (f_a - f_b)^2} \f$. Each GEDT having unit L² norm and no
-negative sample, \f$ d_G \in [0, \sqrt 2] \f$, without unit. Symmetric, zero for equal
-descriptors, and it satisfies the triangle inequality.
-
-\param a,b two descriptors of the same resolution
-\returns \f$ d_G(a, b) \f$
-\throws std::invalid_argument if the resolutions differ or the descriptors are empty.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The distance between the GEDTs of two descriptors: the L² norm of the difference of the
+ * samples, \f$ d_{G}(a, b) = \sqrt{\sum (f_a - f_b)^2} \f$. Each GEDT having unit L² norm and no
+ * negative sample, \f$ d_G \in [0, \sqrt 2] \f$, without unit. Symmetric, zero for equal
+ * descriptors, and it satisfies the triangle inequality.
+ *
+ * \param a,b two descriptors of the same resolution
+ * \returns \f$ d_G(a, b) \f$
+ * \throws std::invalid_argument if the resolutions differ or the descriptors are empty.
 */
 template <typename GeomTraits>
 double gedt_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_descriptor<GeomTraits>& b)
@@ -180,17 +179,17 @@ double gedt_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_de
 }
 
 /*!
-\ingroup PkgSymmetryTransformMatchingRef
-
-The combined distance of two descriptors (thesis, section 4.2): the product
-`reflective_symmetry_descriptor_distance(a, b) * gedt_distance(a, b)`, small only when both the symmetries
-and the shapes are close. Symmetric and zero for equal descriptors; it is not a metric (no
-triangle inequality). Comparing two \f$ 32^3 \f$ descriptors takes a few microseconds
-(benchmark_descriptor, RESULTS.md).
-
-\param a,b two descriptors of the same resolution
-\returns \f$ d_{SM}(a, b)\, d_G(a, b) \f$
-\throws std::invalid_argument if the resolutions differ or the descriptors are empty.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The combined distance of two descriptors (thesis, section 4.2): the product
+ * `reflective_symmetry_descriptor_distance(a, b) * gedt_distance(a, b)`, small only when both the symmetries
+ * and the shapes are close. Symmetric and zero for equal descriptors; it is not a metric (no
+ * triangle inequality). Comparing two \f$ 32^3 \f$ descriptors takes a few microseconds
+ * (benchmark_descriptor, RESULTS.md).
+ *
+ * \param a,b two descriptors of the same resolution
+ * \returns \f$ d_{SM}(a, b)\, d_G(a, b) \f$
+ * \throws std::invalid_argument if the resolutions differ or the descriptors are empty.
 */
 template <typename GeomTraits>
 double descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_descriptor<GeomTraits>& b)
@@ -199,83 +198,33 @@ double descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symme
 }
 
 /*!
-\ingroup PkgSymmetryTransformMatchingRef
-
-Computes the symmetry descriptor of a triangle mesh: its GEDT by
-`gaussian_distance_transform(tm, np)` and the PRST of that GEDT by
-`reflective_symmetry_transform()`, both with `grid_resolution` bins along each axis. The mesh
-should be aligned first (see `Symmetry_descriptor`).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the number \f$ n \f$ of bins along each axis of the PRST and of the GEDT}
-    \cgalParamType{`int`}
-    \cgalParamDefault{32}
-    \cgalParamExtra{even, at least 8 and more than 12 times the Gaussian width}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the bins are computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
-                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
-                          plane for `BOUNDED_WEIGHT`}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print the time taken on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the descriptor of `tm`
-\throws std::invalid_argument as `gaussian_distance_transform()` and `reflective_symmetry_transform()`.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * Computes the symmetry descriptor of a triangle mesh: its GEDT by
+ * `gaussian_distance_transform(tm, np)` and the PRST of that GEDT by
+ * `reflective_symmetry_transform()`, both with `grid_resolution` bins along each axis. The mesh
+ * should be aligned first (see `Symmetry_descriptor`).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the input mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{32,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the descriptor of `tm`
+ * \throws std::invalid_argument as `gaussian_distance_transform()` and `reflective_symmetry_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_descriptor<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -288,80 +237,31 @@ symmetry_descriptor(const TriangleMesh& tm, const NamedParameters& np = paramete
 }
 
 /*!
-\ingroup PkgSymmetryTransformMatchingRef
-
-Computes the symmetry descriptor of a point set, as `symmetry_descriptor()` does for a mesh:
-its GEDT by `gaussian_distance_transform_of_points(points, np)` and the PRST of that GEDT.
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the number \f$ n \f$ of bins along each axis of the PRST and of the GEDT}
-    \cgalParamType{`int`}
-    \cgalParamDefault{32}
-    \cgalParamExtra{even, at least 8 and more than 12 times the Gaussian width}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{point_map}
-    \cgalParamDescription{a property map associating points to the elements of `points`}
-    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
-    \cgalParamDefault{`CGAL::Identity_property_map`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the bins are computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
-                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
-                          plane for `BOUNDED_WEIGHT`}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print the time taken on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the descriptor of `points`
-\throws std::invalid_argument as `gaussian_distance_transform_of_points()` and `reflective_symmetry_transform()`.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * Computes the symmetry descriptor of a point set, as `symmetry_descriptor()` does for a mesh:
+ * its GEDT by `gaussian_distance_transform_of_points(points, np)` and the PRST of that GEDT.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the input points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{32,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the descriptor of `points`
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and `reflective_symmetry_transform()`.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_descriptor<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
@@ -373,7 +273,6 @@ symmetry_descriptor_of_points(const PointRange& points, const NamedParameters& n
     reflective_symmetry_transform(gedt, params), gedt);
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_SYMMETRY_DESCRIPTOR_H

@@ -18,12 +18,11 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformSegmentationRef
-What became of a segment of the segmentation tree of `segment_by_symmetry()`.
+ * \ingroup PkgSymmetryTransformSegmentationRef
+ * What became of a segment of the segmentation tree of `segment_by_symmetry()`.
 */
 enum class Segment_status {
   /// It was split: its children partition it.
@@ -43,9 +42,9 @@ enum class Segment_status {
 };
 
 /*!
-\ingroup PkgSymmetryTransformSegmentationRef
-A segment of the segmentation tree of `segment_by_symmetry()`: a connected set of faces.
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformSegmentationRef
+ * A segment of the segmentation tree of `segment_by_symmetry()`: a connected set of faces.
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 struct Symmetry_segment
@@ -77,13 +76,13 @@ struct Symmetry_segment
 };
 
 /*!
-\ingroup PkgSymmetryTransformSegmentationRef
-The segmentation tree of `segment_by_symmetry()`, filled when it is passed as the named
-parameter `segmentation_tree` (wrapped in `std::ref`).
-
-Segments are stored parents first: the roots (the connected components of the mesh, level 0),
-then the segments of level 1, and so on. The leaves are the segments of the result.
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformSegmentationRef
+ * The segmentation tree of `segment_by_symmetry()`, filled when it is passed as the named
+ * parameter `segmentation_tree` (wrapped in `std::ref`).
+ *
+ * Segments are stored parents first: the roots (the connected components of the mesh, level 0),
+ * then the segments of level 1, and so on. The leaves are the segments of the result.
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 struct Segmentation_tree
@@ -115,117 +114,94 @@ struct Segmentation_tree
 };
 
 /*!
-\ingroup PkgSymmetryTransformSegmentationRef
-
-Segments a triangle mesh into parts that follow its symmetric components (thesis, section 5.2).
-Each connected component is the root of a segmentation tree whose segments are split level by
-level: the principal symmetries of a segment are detected on the segment alone, the faces are
-clustered by their supports of these planes, and a graph cut on the dual graph draws short
-boundaries along concave creases. The algorithm, its stopping rules and its defaults are
-described in \ref SymmetryTransformSegmentation.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam SegmentIdMap a model of `WritablePropertyMap` with
-        `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and `std::size_t` as value
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the mesh
-\param segment_id_map receives the segment of each face, from 0 to the number of segments minus 1
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among those listed
-          below, and the other named parameters of `detect_principal_symmetries()`, passed on to
-          the detection on every segment
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{max_segmentation_depth}
-    \cgalParamDescription{the largest depth of the tree: at most \f$ 2^d \f$ segments per
-                           component if each split gives two parts}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{3}
-  \cgalParamNEnd
-  \cgalParamNBegin{max_number_of_segments}
-    \cgalParamDescription{the largest number of segments; a mesh with more connected components
-                           still gets one segment per component}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{no limit}
-  \cgalParamNEnd
-  \cgalParamNBegin{smoothing_lambda}
-    \cgalParamDescription{\f$ \lambda \f$, the weight of the boundary in the graph cut: 0 keeps
-                           the labels of the clustering, larger values give shorter boundaries}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1}
-  \cgalParamNEnd
-  \cgalParamNBegin{segmentation_tree}
-    \cgalParamDescription{receives the segmentation tree (pass `std::ref(tree)`)}
-    \cgalParamType{`std::reference_wrapper<Segmentation_tree<GeomTraits>>`}
-    \cgalParamDefault{not filled}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the grid resolution of the detection on the whole mesh; a segment gets
-                           a grid of the same voxel size, at least \f$ 24^3 \f$}
-    \cgalParamType{`int`}
-    \cgalParamDefault{32}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the Monte Carlo samples of the detection's transform on the whole mesh;
-                           a segment gets the same density, at least \f$ 2 \cdot 10^4 \f$}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{\f$ 10^5 \f$}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_refinement_samples}
-    \cgalParamDescription{the refinement samples of the detection on the whole mesh; a segment
-                           gets the same density, at least 1000}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{5000}
-  \cgalParamNEnd
-  \cgalParamNBegin{max_number_of_planes}
-    \cgalParamDescription{the largest number of planes of a segment, the features of its clustering}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{6}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the detection's samples and of the clustering's starts}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads, shared by the segments of a level; the result
-                           depends on it only through the rounding of sums}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key and
-                   `GeomTraits::Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_index_map}
-    \cgalParamDescription{a property map associating to each face of `tm` a unique index between
-                           0 and `num_faces(tm) - 1`; if the indices have gaps (a `Surface_mesh`
-                           with removed faces not yet collected), the order of `faces(tm)` is used}
-    \cgalParamType{a model of `ReadablePropertyMap` with
-                   `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and
-                   `std::size_t` as value type}
-    \cgalParamDefault{an automatically indexed internal map}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{a geometric traits class: only its type is used, to name the result types; the computations are in double precision}
-    \cgalParamType{a model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print a line per examined segment on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the number of segments. Every face gets a segment id, and every segment is connected
-(through edges of the mesh). Deterministic for a given `random_seed` and number of threads.
-\throws std::invalid_argument if the mesh is empty, has a face that is not a triangle, a NaN or
-infinite coordinate, or only degenerate (zero-area) faces, or on the other bad inputs of
-`detect_principal_symmetries()` (e.g. a grid resolution too small).
+ * \ingroup PkgSymmetryTransformSegmentationRef
+ *
+ * Segments a triangle mesh into parts that follow its symmetric components (thesis, section 5.2).
+ * Each connected component is the root of a segmentation tree whose segments are split level by
+ * level: the principal symmetries of a segment are detected on the segment alone, the faces are
+ * clustered by their supports of these planes, and a graph cut on the dual graph draws short
+ * boundaries along concave creases. The algorithm, its stopping rules and its defaults are
+ * described in \ref SymmetryTransformSegmentation.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam SegmentIdMap a model of `WritablePropertyMap` with
+ *         `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and `std::size_t` as value
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param segment_id_map receives the segment of each face, from 0 to the number of segments minus 1
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among those listed
+ *           below, and the other named parameters of `detect_principal_symmetries()`, passed on to
+ *           the detection on every segment
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{max_segmentation_depth}
+ *     \cgalParamDescription{the largest depth of the tree: at most \f$ 2^d \f$ segments per
+ *                            component if each split gives two parts}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{3}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_number_of_segments}
+ *     \cgalParamDescription{the largest number of segments; a mesh with more connected components
+ *                            still gets one segment per component}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{no limit}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{smoothing_lambda}
+ *     \cgalParamDescription{\f$ \lambda \f$, the weight of the boundary in the graph cut: 0 keeps
+ *                            the labels of the clustering, larger values give shorter boundaries}
+ *     \cgalParamType{`double`}
+ *     \cgalParamDefault{1}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{segmentation_tree}
+ *     \cgalParamDescription{receives the segmentation tree (pass `std::ref(tree)`)}
+ *     \cgalParamType{`std::reference_wrapper<Segmentation_tree<GeomTraits>>`}
+ *     \cgalParamDefault{not filled}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{grid_resolution}
+ *     \cgalParamDescription{the grid resolution of the detection on the whole mesh; a segment gets
+ *                            a grid of the same voxel size, at least \f$ 24^3 \f$}
+ *     \cgalParamType{`int`}
+ *     \cgalParamDefault{32}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_samples}
+ *     \cgalParamDescription{the Monte Carlo samples of the detection's transform on the whole mesh;
+ *                            a segment gets the same density, at least \f$ 2 \cdot 10^4 \f$}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{\f$ 10^5 \f$}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{number_of_refinement_samples}
+ *     \cgalParamDescription{the refinement samples of the detection on the whole mesh; a segment
+ *                            gets the same density, at least 1000}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{5000}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{max_number_of_planes}
+ *     \cgalParamDescription{the largest number of planes of a segment, the features of its clustering}
+ *     \cgalParamType{`std::size_t`}
+ *     \cgalParamDefault{6}
+ *   \cgalParamNEnd
+ *   \cgalParamRandomSeed{the seed of the detection's samples and of the clustering's starts}
+ *   \cgalParamThreads{the number of threads\, shared by the segments of a level; the result depends on it only through the rounding of sums}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamNBegin{face_index_map}
+ *     \cgalParamDescription{a property map associating to each face of `tm` a unique index between
+ *                            0 and `num_faces(tm) - 1`; if the indices have gaps (a `Surface_mesh`
+ *                            with removed faces not yet collected), the order of `faces(tm)` is used}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with
+ *                    `boost::graph_traits<TriangleMesh>::%face_descriptor` as key and
+ *                    `std::size_t` as value type}
+ *     \cgalParamDefault{an automatically indexed internal map}
+ *   \cgalParamNEnd
+ *   \cgalParamGeomTraits
+ *   \cgalParamVerbose{whether to print a line per examined segment on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the number of segments. Every face gets a segment id, and every segment is connected
+ * (through edges of the mesh). Deterministic for a given `random_seed` and number of threads.
+ * \throws std::invalid_argument if the mesh is empty, has a face that is not a triangle, a NaN or
+ * infinite coordinate, or only degenerate (zero-area) faces, or on the other bad inputs of
+ * `detect_principal_symmetries()` (e.g. a grid resolution too small).
 */
 template <typename TriangleMesh, typename SegmentIdMap, typename NamedParameters = parameters::Default_named_parameters>
 std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_map,
@@ -246,7 +222,6 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
   return number_of_segments;
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_SYMMETRY_SEGMENTATION_H

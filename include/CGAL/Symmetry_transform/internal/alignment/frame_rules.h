@@ -10,6 +10,7 @@
 // transform; the orientation of the axes towards more mass. In doubles; the public frame is
 // built at the end by to_symmetry_frame().
 
+#include <CGAL/Symmetry_transform/Symmetry_frame.h>
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/internal/alignment/mass_distribution.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
@@ -28,13 +29,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-
-template <typename GeomTraits>
-struct Symmetry_frame; // symmetry_alignment.h
-
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Below this normalised moment (|mean of s |s|| / R^2), the mass is taken as balanced along an axis.
 constexpr double balanced_moment = 1e-3;
@@ -189,8 +184,6 @@ Symmetry_frame<GT> to_symmetry_frame(const Eigen_frame& frame)
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ALIGNMENT_FRAME_RULES_H

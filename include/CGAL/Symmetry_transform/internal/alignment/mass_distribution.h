@@ -19,9 +19,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The moments are exact on the triangles: the integral of a polynomial of degree k of a linear
 // function s over a triangle T of area A is 2A k!/(k+2)! h_k(s_0, s_1, s_2), h_k the complete
@@ -128,8 +126,6 @@ Mass_distribution mass_of_points(const PointRange& points, const NamedParameters
   return Mass_distribution(points_of_range(points, NP_helper::get_const_point_map(points, np)));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ALIGNMENT_MASS_DISTRIBUTION_H

@@ -20,9 +20,7 @@
 #include <string>
 #include <utility>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 constexpr std::uint32_t byte_order_mark = 0x01020304;
 
@@ -152,8 +150,6 @@ auto read_file(const std::string& filename, const std::string& context, const Re
   return read(is);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_CHECKED_BINARY_STREAM_H

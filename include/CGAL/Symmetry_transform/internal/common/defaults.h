@@ -11,9 +11,7 @@
 
 #include <cstddef>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 namespace defaults {
 
 // Grid and transforms (gaussian_distance_transform(), point_symmetry_transform(),
@@ -63,8 +61,6 @@ constexpr std::size_t segmentation_refinement_samples = 5000;
 constexpr std::size_t segmentation_max_number_of_planes = 6;
 
 } // namespace defaults
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_DEFAULTS_H

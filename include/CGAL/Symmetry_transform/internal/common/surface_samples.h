@@ -24,9 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // ISP's coarse phase uses the first samples of isp_order(): every coarse_sample_stride-th, spread
 // over the shape, an eighth of the cost of a fine iteration.
@@ -115,8 +113,6 @@ std::vector<Eigen::Vector3d> point_samples(const std::vector<Dpoint>& points, co
   return point_samples(points, refinement_sampling(np));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SURFACE_SAMPLES_H

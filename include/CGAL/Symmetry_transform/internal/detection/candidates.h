@@ -17,9 +17,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Negative discrete Laplacian at a bin (6 neighbours, through the wraps): the depth of a maximum.
 inline double maximum_depth(const Plane_bins& bins, const std::vector<double>& values, const std::array<std::size_t, 3>& b)
@@ -107,8 +105,6 @@ bool stays_near_bin(const Reflective_symmetry_transform<GT>& prst, const Dplane&
   return same_plane(to_dplane(prst.plane(b)), plane, reach * bin_angle, reach * bins.offset_step(), center_of(bins));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_CANDIDATES_H

@@ -28,9 +28,7 @@
 
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The PRST of a detection. Its maxima need only be located to a bin or two, ISP doing the
 // rest: defaults::detection_monte_carlo_pairs Monte Carlo samples suffice unless the user chose
@@ -111,8 +109,6 @@ detection_of_points(const PointRange& points, const NamedParameters& np)
   return {std::move(symmetries), std::move(prst)};
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_DETECTION_H

@@ -21,9 +21,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The points at which the support of a reflection on triangle abc is measured: its centroid and
 // three interior points, each a third of the way from the centroid to a corner (symmetry_support(),
@@ -72,8 +70,6 @@ Face_supports<TriangleMesh> face_supports(const TriangleMesh& tm, const VertexPo
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_FACE_SUPPORT_H

@@ -29,9 +29,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The coarse phase uses every coarse_sample_stride-th sample (the first ones, see isp_order());
 // fewer than this many cannot locate a plane, and the coarse phase is skipped.
@@ -381,8 +379,6 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   return fine;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_ITERATIVE_SYMMETRIC_POINTS_H

@@ -26,9 +26,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The closest point and the unit normal of the surface there.
 typedef std::pair<Eigen::Vector3d, Eigen::Vector3d> Match;
@@ -185,8 +183,6 @@ private:
   Nearest_point nearest_;
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_MATCHERS_H

@@ -24,9 +24,7 @@
 #include <iostream>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The thesis drops a candidate that leaves its bin: an unstable maximum. Monte Carlo noise and
 // the smoothing move maxima along flat ridges by a few bins, hence a reach of 3 bins.
@@ -138,8 +136,6 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
   return refine_candidates(gedt, prst, samples, matcher, isp_settings(np, gedt), candidate_settings(np), walk_matcher);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_REFINEMENT_H

@@ -19,9 +19,7 @@
 
 #include <cstddef>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Which candidates of the transform are refined, and how many planes are kept.
 struct Candidate_settings
@@ -89,8 +87,6 @@ Isp_settings isp_settings(const NamedParameters& np, const Voxel_grid<GT>& gedt)
 template <typename GT, typename NamedParameters>
 Isp_settings isp_settings(const NamedParameters&, const Voxel_grid<GT>&&) = delete;
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_SETTINGS_H

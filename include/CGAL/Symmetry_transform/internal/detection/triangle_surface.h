@@ -20,9 +20,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Built in place, neither copied nor moved: the tree and the field refer to `triangles`, the
 // field to the tree. The members are declared, hence built, in the order they depend on each other.
@@ -62,8 +60,6 @@ private:
   {}
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_TRIANGLE_SURFACE_H

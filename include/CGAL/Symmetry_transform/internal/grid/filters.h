@@ -15,9 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Largest distance from the grid centre to a non-zero sample, plus half a voxel diagonal.
 template <typename GT>
@@ -60,8 +58,6 @@ Voxel_grid<GT> sharpened_for_trilinear_interpolation(const Voxel_grid<GT>& f)
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_FILTERS_H

@@ -19,9 +19,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 template <typename GT>
 Voxel_grid<GT> empty_grid(const Shape_frame& frame, const Grid_settings& settings)
@@ -175,8 +173,6 @@ Voxel_grid<GT> gaussian_distance_transform_of_points(const std::vector<Dpoint>& 
   return grid;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_GAUSSIAN_DISTANCE_TRANSFORM_H

@@ -19,9 +19,7 @@
 #include <unistd.h>
 #endif
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Beyond this many standard deviations the Gaussian is set to zero: exp(-4.5) = 1.1%, and
 // the energy lost, erfc(3) ~ 2e-5 of the total, is far below the discretisation error.
@@ -109,8 +107,6 @@ Grid_settings grid_settings(const NamedParameters& np, double radius)
   return grid_settings(grid_options(np), radius);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_SETTINGS_H

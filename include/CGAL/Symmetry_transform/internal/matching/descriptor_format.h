@@ -17,15 +17,12 @@
 #include <ostream>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Descriptors are compared by the thousand at 32^3 (256 KiB each): beyond 1024 (8 GiB for the
 // two arrays) none is of use, and the header is corrupt.
 constexpr std::uint64_t max_descriptor_file_resolution = 1024;
-constexpr Binary_format descriptor_file_format = {
-  {'C', 'G', 'A', 'L', 'S', 'D', 'S', 'C'}, 1, "symmetry descriptor", max_descriptor_file_resolution};
+constexpr Binary_format descriptor_file_format = {{'C', 'G', 'A', 'L', 'S', 'D', 'S', 'C'}, 1, "symmetry descriptor", max_descriptor_file_resolution};
 
 inline void write_descriptor(std::ostream& os, std::size_t resolution, const std::vector<float>& prst,
                              const std::vector<float>& gedt)
@@ -51,8 +48,6 @@ inline std::size_t read_descriptor(std::istream& is, std::vector<float>& prst, s
   return n;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_MATCHING_DESCRIPTOR_FORMAT_H

@@ -12,9 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // sqrt(sum_i w_i sum_{j,k} (a - b)^2 / sum of the weights), w_i = row_weights[i]: the values
 // of one index i are n^2 contiguous floats, summed in 8 float lanes (vectorised by the compiler)
@@ -52,8 +50,6 @@ void check_same_resolution(const Descriptor& a, const Descriptor& b, const char*
   if(a.resolution() == 0) throw std::invalid_argument(std::string(function) + ": empty descriptor");
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_MATCHING_DISTANCES_H

@@ -10,9 +10,7 @@
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The named parameters with grid_resolution set: the one given, defaults::descriptor_grid_resolution by default.
 template <typename NamedParameters>
@@ -23,8 +21,6 @@ auto descriptor_parameters(const NamedParameters& np)
   return np.grid_resolution(n);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_MATCHING_SETTINGS_H

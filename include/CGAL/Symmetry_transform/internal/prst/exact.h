@@ -20,9 +20,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Symmetry measures of all bins, by convolution of f resampled (from its sharpened version)
 // along the columns of each direction, divided by sum_x f(x)^2.
@@ -125,8 +123,6 @@ void exact_reflective_symmetry(const Voxel_grid<GT>& f_samples, const Plane_bins
   Exact_reflective_symmetry<GT>(f_samples, bins).run(threads, values);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_EXACT_H

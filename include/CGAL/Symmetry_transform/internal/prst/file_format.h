@@ -18,15 +18,12 @@
 #include <ostream>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The resolution of a PRST is that of its grid: beyond 4096 (4096^3 doubles, 512 GiB) no machine
 // wrote it, and the header is corrupt.
 constexpr std::uint64_t max_prst_file_resolution = 4096;
-constexpr Binary_format prst_file_format = {
-  {'C', 'G', 'A', 'L', 'P', 'R', 'S', 'T'}, 1, "reflective symmetry transform", max_prst_file_resolution};
+constexpr Binary_format prst_file_format = {{'C', 'G', 'A', 'L', 'P', 'R', 'S', 'T'}, 1, "reflective symmetry transform", max_prst_file_resolution};
 
 inline void write_reflective_symmetry(std::ostream& os, const Plane_bins& bins, const std::vector<double>& values)
 {
@@ -53,8 +50,6 @@ inline void read_reflective_symmetry(std::istream& is, Plane_bins& bins, std::ve
   in.finish();
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_FILE_FORMAT_H

@@ -26,9 +26,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Trilinear interpolation that first looks up a coarse map of the blocks of 4^3 voxels that
 // can see a non-zero sample (a block and the voxel after it along each axis): most points of
@@ -330,8 +328,6 @@ private:
   double sum_ = 0., sum_of_squares_ = 0., support_ = 0.;
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_MONTE_CARLO_H

@@ -18,9 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Two anchors are matched across a plane if the mirror image of one lies within this many mean
 // edge lengths of the other (and each is the nearest to the image of the other).
@@ -121,8 +119,6 @@ inline std::size_t snap_to_mirror_positions(const Patch_boundaries& boundaries, 
   return std::size_t(std::count(matched.begin(), matched.end(), 1));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_ANCHOR_POSITIONS_H

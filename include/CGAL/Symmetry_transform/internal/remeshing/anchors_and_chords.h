@@ -26,9 +26,7 @@
 #include <limits>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // A walk around a vertex to the next boundary halfedge ends after at most its number of faces;
 // this bound stops it around a vertex where the walk would never reach a boundary (a
@@ -344,8 +342,6 @@ private:
   std::vector<std::size_t> cycles_;
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_ANCHORS_AND_CHORDS_H

@@ -32,9 +32,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Hole cycles longer than this are left open: the triangulation costs n^3 steps (8e6 here).
 constexpr std::size_t max_hole_cycle_length = 200;
@@ -243,8 +241,6 @@ private:
   std::set<Triangle> keys_;              // the output triangles' sorted corners (not the fans')
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_HOLE_FILLING_H

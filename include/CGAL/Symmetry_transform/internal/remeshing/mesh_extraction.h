@@ -21,9 +21,7 @@
 #include <array>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 struct Remeshing_output
 {
@@ -50,8 +48,6 @@ inline Remeshing_output extract_mesh(const Symmetric_partition& partition, const
   return out;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MESH_EXTRACTION_H

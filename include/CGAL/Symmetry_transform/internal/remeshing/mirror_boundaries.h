@@ -18,9 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The faces are relabelled in sweeps over the mesh until none changes, at most this many per
 // plane: a change can enable another next to it, hence the repeated sweeps; the bound stops
@@ -77,8 +75,6 @@ inline void reconnect_patches(Symmetric_partition& partition)
   partition.join_neighbouring_patches();
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MIRROR_BOUNDARIES_H

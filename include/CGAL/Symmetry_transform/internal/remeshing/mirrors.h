@@ -18,9 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // A face has a mirror face through a plane if a face centroid lies within this fraction of the
 // bounding-box diagonal of the mirror image of its centroid: twice the symmetry error of the
@@ -79,8 +77,6 @@ private:
   std::optional<Nearest_point> tree_;
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MIRRORS_H

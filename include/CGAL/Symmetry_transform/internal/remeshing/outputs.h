@@ -22,9 +22,7 @@
 #include <array>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Builds `out` (a MutableFaceGraph) from the anchors and triangles; a soup that is not a
 // polygon mesh is oriented first (non-manifold vertices duplicated).
@@ -116,8 +114,6 @@ void write_mesh_outputs(const Remeshing_output& out, const NamedParameters& np)
   build_output_mesh(out.anchors, out.triangles, parameters::get_parameter(np, internal_np::st_output_mesh));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_OUTPUTS_H

@@ -38,9 +38,7 @@
 #include <queue>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // A mirror face fits its mirrored patch "about as well" as the face it mirrors fits its own if
 // its error is at most this factor times that error, plus this fraction of its area (at
@@ -549,8 +547,6 @@ private:
   std::vector<Candidate> joins_; // mirrors joining at once
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PARTITION_H

@@ -16,9 +16,7 @@
 #include <algorithm>
 #include <iostream>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Seeding, then `number_of_iterations` iterations with a teleportation attempt after each
 // `number_of_relaxations` of them, then the boundaries in step.
@@ -41,8 +39,6 @@ inline void generate_proxies(Symmetric_partition& partition)
   }
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PROXY_GENERATION_H

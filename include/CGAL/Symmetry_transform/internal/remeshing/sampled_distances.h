@@ -21,9 +21,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // `number_of_points_on_faces` samples of the triangles, seeded by `random_seed`.
 template <typename NamedParameters>
@@ -66,8 +64,6 @@ inline double root_mean_square(const std::vector<double>& d)
   return d.empty() ? 0. : std::sqrt(sum / double(d.size()));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_SAMPLED_DISTANCES_H

@@ -19,9 +19,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // One proxy per connected component of the mesh, fitted to it.
 inline void bootstrap(Symmetric_partition& partition)
@@ -138,8 +136,6 @@ inline void seed_proxies(Symmetric_partition& partition)
   else seed_hierarchical(partition, max_proxies, min_drop);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_SEEDING_H

@@ -20,9 +20,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The planes a vertex lies on, and those a face has a mirror through, are bits of a std::uint64_t.
 constexpr std::size_t max_number_of_mirror_planes = 64;
@@ -91,8 +89,6 @@ Meshing_settings meshing_settings(const NamedParameters& np)
   return s;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_SETTINGS_H

@@ -30,9 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // A vertex within this fraction of the bounding-box diagonal of a plane lies on it: far above
 // the rounding of the split vertices put on the plane (about 1e-16), far below any feature.
@@ -299,8 +297,6 @@ Remeshing_mesh make_working_mesh(const TriangleMesh& tm, const std::vector<Dplan
   return m;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_WORKING_MESH_H

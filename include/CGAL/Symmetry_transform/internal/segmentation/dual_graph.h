@@ -27,9 +27,7 @@
 #include <numeric>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Katz and Tal weigh convex creases less than concave ones: a part boundary tends to run along
 // a concave crease. Here convex creases do not count at all: the cost of a normalised angular
@@ -229,8 +227,6 @@ inline std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, 
   return triangles;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_DUAL_GRAPH_H

@@ -26,9 +26,7 @@
 #include <limits>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // k-means++ starts of the 2-means, the best of which is kept: one start can settle on a poor
 // local minimum, five rarely all do.
@@ -205,8 +203,6 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
   return labels;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_FUZZY_CLUSTERING_H

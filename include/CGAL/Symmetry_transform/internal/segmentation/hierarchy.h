@@ -24,9 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The tree under construction. Segment is Symmetry_segment<GT> (symmetry_segmentation.h), a
 // template parameter so that this header need not include the public one.
@@ -189,8 +187,6 @@ std::size_t segment_mesh(const TriangleMesh& tm, const VertexPointMap& vpm, cons
   return number_of_segments;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_HIERARCHY_H

@@ -21,9 +21,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The tuned constants of the segmentation (those of the clustering and of the dual graph aside).
 // The value of max_number_of_segments that sets no limit (Symmetry_segment::none).
@@ -146,8 +144,6 @@ inline auto detection_parameters(const Segmentation_settings& s, double fraction
     .number_of_threads(threads);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SETTINGS_H

@@ -28,9 +28,7 @@
 #include <limits>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The largest distance from the area-weighted centroid of the faces to their vertices.
 inline double radius_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
@@ -201,8 +199,6 @@ inline std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_me
   return parts;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SPLIT_H

@@ -17,9 +17,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The finest icosphere: 10 4^8 + 2 = 655362 vertices, more than a viewer needs; each further
 // subdivision would quadruple the memory.
@@ -48,8 +46,6 @@ Surface_mesh<typename GT::Point_3> score_sphere(const Weighted_normals& planes, 
   return sphere;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_VIEWPOINT_SCORE_SPHERE_H

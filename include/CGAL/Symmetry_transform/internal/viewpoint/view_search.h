@@ -9,6 +9,7 @@
 // the viewpoint score over a Fibonacci sphere, each refined exactly, and its global minimum over
 // the vertices of the arrangement of the planes' great circles.
 
+#include <CGAL/Symmetry_transform/Viewpoint.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/viewpoint/weighted_normals.h>
 
@@ -22,13 +23,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-
-template <typename GeomTraits>
-struct Viewpoint; // viewpoint_selection.h
-
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The fewest directions of the Fibonacci sphere: an icosahedron's vertices, the coarsest sampling
 // that leaves no direction far from a sample.
@@ -140,8 +135,6 @@ inline Scored_view worst_view(const Weighted_normals& planes)
   return worst;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_VIEWPOINT_VIEW_SEARCH_H

@@ -23,9 +23,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The ascent stops on the exact maximum after a few steps (see Weighted_normals::ascend()); this
 // bound only guards against a cycle of rounding.
@@ -129,8 +127,6 @@ struct Weighted_normals
   }
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_VIEWPOINT_WEIGHTED_NORMALS_H
