@@ -12,14 +12,9 @@
 // so that results depend on the seed and the number of threads only.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/grid/filters.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
-
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/hilbert_sort.h>
-#include <CGAL/property_map.h>
 
 #include <boost/random/discrete_distribution.hpp>
 #include <boost/random/mersenne_twister.hpp>
@@ -88,24 +83,6 @@ inline std::uint32_t stream_seed(unsigned seed, std::size_t piece)
 {
   return std::uint32_t(seed) * 2654435761u + std::uint32_t(piece) * 40503u + 1u;
 }
-
-// The integer coordinates (i, j, k) of voxel v = (k n + j) n + i, as a point: the property map
-// through which CGAL::hilbert_sort orders voxels.
-struct Voxel_index_map
-{
-  typedef std::size_t key_type;
-  typedef Dpoint value_type;
-  typedef Dpoint reference;
-  typedef boost::readable_property_map_tag category;
-
-  std::size_t resolution;
-
-  friend Dpoint get(const Voxel_index_map& map, std::size_t v)
-  {
-    const std::size_t n = map.resolution;
-    return Dpoint(double(v % n), double(v / n % n), double(v / (n * n)));
-  }
-};
 
 // The voting estimators draw their samples in chunks of this many, each with its own stream:
 // large enough to amortise the per-chunk vote array, small enough to share the work.
@@ -265,9 +242,10 @@ private:
   Strata strata_of_voxels(std::size_t per_direction) const
   {
     Strata strata{voxels_, std::vector<double>(voxels_.size()), per_direction};
-    typedef CGAL::Spatial_sort_traits_adapter_3<Dkernel, Voxel_index_map> Traits;
-    CGAL::hilbert_sort(strata.voxels.begin(), strata.voxels.end(), Traits(Voxel_index_map{f_.resolution()}),
-                       CGAL::Hilbert_sort_middle_policy());
+    const std::size_t res = f_.resolution();
+    std::sort(strata.voxels.begin(), strata.voxels.end(), [res](std::size_t a, std::size_t b) {
+      return hilbert_index(a % res, a / res % res, a / (res * res)) < hilbert_index(b % res, b / res % res, b / (res * res));
+    });
     double running = 0.;
     for(std::size_t v = 0; v < strata.voxels.size(); ++v) strata.cumulative[v] = running += f_.values()[strata.voxels[v]];
     return strata;
@@ -309,6 +287,35 @@ private:
     }
     const double scale = sum_ / (double(strata.per_direction) * sum_of_squares_);
     for(std::size_t k = 0; k < n; ++k) line[k] *= scale;
+  }
+
+  // Position of voxel (i,j,k) along a Hilbert curve through the grid (J. Skilling,
+  // "Programming the Hilbert curve", 2004): consecutive voxels along it are neighbours.
+  static std::uint64_t hilbert_index(std::size_t i, std::size_t j, std::size_t k)
+  {
+    constexpr int bits = 12;
+    std::uint32_t x[3] = {std::uint32_t(i), std::uint32_t(j), std::uint32_t(k)};
+    for(std::uint32_t q = 1u << (bits - 1); q > 1; q >>= 1) { // inverse undo of excess work
+      const std::uint32_t p = q - 1;
+      for(int a = 0; a < 3; ++a) {
+        if(x[a] & q)
+          x[0] ^= p;
+        else {
+          const std::uint32_t t = (x[0] ^ x[a]) & p;
+          x[0] ^= t;
+          x[a] ^= t;
+        }
+      }
+    }
+    for(int a = 1; a < 3; ++a) x[a] ^= x[a - 1]; // Gray encode
+    std::uint32_t t = 0;
+    for(std::uint32_t q = 1u << (bits - 1); q > 1; q >>= 1)
+      if(x[2] & q) t ^= q - 1;
+    for(int a = 0; a < 3; ++a) x[a] ^= t;
+    std::uint64_t code = 0; // interleave the transposed bits, most significant first
+    for(int bit = bits - 1; bit >= 0; --bit)
+      for(int a = 0; a < 3; ++a) code = (code << 1) | ((x[a] >> bit) & 1u);
+    return code;
   }
 
   long voxel(double coordinate, int axis) const { return long(std::floor((coordinate - f_.origin()[axis]) / h_)); }
