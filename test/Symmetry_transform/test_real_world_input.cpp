@@ -387,7 +387,7 @@ TEST(PointsWithNormals, PerfectSamplingOfABoxGivesTheExactPlane)
 // 20000 points on a box moved by Gaussian noise of standard deviation 0.2 % of the radius per
 // coordinate, their normals estimated from the noisy points by PCA (18 neighbours), as scans
 // carry them: within 0.5 degree, and closer than without normals on the same points (measured:
-// at most 0.008 degree against 0.018 degree).
+// at most 0.010 degree, mean 0.0063, against at most 0.034 degree, mean 0.018).
 TEST(PointsWithNormals, NoisyScanOfABoxIsCloserWithNormals)
 {
   CGAL::Random rng(302);
