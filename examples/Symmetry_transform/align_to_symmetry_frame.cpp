@@ -12,9 +12,8 @@
 //          [--seed S] [--output FILE.ply|.off]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/transform.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Real_timer.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Symmetry_transform/symmetry_alignment.h>
 
@@ -30,7 +29,7 @@
 #include <string>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef examples::Triangle_soup<K::Point_3> Soup;
 namespace ST = CGAL::Symmetry_transform;
 
 void print(const std::string& name, const ST::Symmetry_frame<K>& frame)
@@ -47,9 +46,9 @@ double degrees_between_lines(const K::Vector_3& a, const K::Vector_3& b)
 
 // The symmetry frame next to the PCA frame (centre of mass, axes of largest variance first),
 // which it replaces where the variances of a shape are close.
-void print_with_pca_frame(const ST::Symmetry_frame<K>& frame, const Mesh& mesh)
+void print_with_pca_frame(const ST::Symmetry_frame<K>& frame, const Soup& soup)
 {
-  const ST::Symmetry_frame<K> pca = ST::pca_frame(mesh);
+  const ST::Symmetry_frame<K> pca = ST::pca_frame_of_triangle_soup(soup.points, soup.triangles);
   print("Symmetry frame (centre of symmetry, principal symmetry axes):", frame);
   print("PCA frame (centre of mass, principal axes, largest variance first):", pca);
   std::cout << "Centres " << std::sqrt(CGAL::squared_distance(frame.center, pca.center)) << " apart; each symmetry axis "
@@ -70,22 +69,23 @@ try {
                     seed = options.integer("--seed", 0, 0);
   const std::string output = options.text("--output", "align_to_symmetry_frame.ply");
   options.reject_unknown();
-  Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
+  Soup soup = examples::read_triangle_soup<K::Point_3>(filename); // any mesh file, repaired as a soup
 
   CGAL::Real_timer timer;
   timer.start();
-  const ST::Symmetry_frame<K> frame = ST::symmetry_frame(mesh,
+  const ST::Symmetry_frame<K> frame = ST::symmetry_frame_of_triangle_soup(soup.points, soup.triangles,
     CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples and PRST bins per axis
                       number_of_samples(samples).       // Monte Carlo samples of the PRST
                       random_seed(unsigned(seed)));     // the same seed, the same frame
   std::cout << std::setprecision(4) << "Symmetry frame in " << timer.time() << " s (grid " << resolution << "^3, "
             << samples << " Monte Carlo samples)\n";
-  print_with_pca_frame(frame, mesh);
+  print_with_pca_frame(frame, soup);
 
-  CGAL::Polygon_mesh_processing::transform(ST::to_canonical(frame), mesh); // the symmetry frame becomes x, y, z
-  if(!CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)))
+  const K::Aff_transformation_3 to_canonical = ST::to_canonical(frame); // the symmetry frame becomes x, y, z
+  for(K::Point_3& p : soup.points) p = to_canonical.transform(p);
+  if(!CGAL::IO::write_polygon_soup(output, soup.points, soup.triangles, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + output);
-  std::cout << "Wrote " << output << ": the mesh moved to its symmetry frame (centre at the origin, axes x, y, z)\n";
+  std::cout << "Wrote " << output << ": the surface moved to its symmetry frame (centre at the origin, axes x, y, z)\n";
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {

@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
+#include <CGAL/Symmetry_transform/symmetry_measure.h>
 #include <CGAL/Symmetry_transform/viewpoint_selection.h>
 
 #include "colour_ramps.h"
@@ -37,6 +38,7 @@
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef examples::Triangle_soup<K::Point_3> Soup;
 namespace ST = CGAL::Symmetry_transform;
 
 std::string direction(const K::Vector_3& v)
@@ -47,13 +49,16 @@ std::string direction(const K::Vector_3& v)
   return s.str();
 }
 
-void print_planes(const std::vector<ST::Principal_symmetry<K>>& symmetries)
+// Each plane with its symmetry M(u) and its symmetry distance error.
+void print_planes(const std::vector<ST::Principal_symmetry<K>>& symmetries, const Soup& soup)
 {
-  std::cout << "   #   normal u                   M(u)\n";
+  std::cout << "   #   normal u                   M(u)       SDE\n";
   for(std::size_t i = 0; i < symmetries.size(); ++i) {
     const K::Vector_3 n = symmetries[i].plane.orthogonal_vector();
     std::cout << std::setw(4) << i + 1 << "   " << direction(n / std::sqrt(n.squared_length())) << std::fixed
-              << std::setw(10) << symmetries[i].symmetry << std::defaultfloat << "\n";
+              << std::setw(10) << symmetries[i].symmetry << std::setprecision(5) << std::setw(10)
+              << ST::symmetry_distance_error_of_triangle_soup(soup.points, soup.triangles, symmetries[i].plane)
+              << std::defaultfloat << "\n";
   }
 }
 
@@ -87,11 +92,11 @@ void print_views(const std::vector<ST::Principal_symmetry<K>>& symmetries, const
 
 // The score sphere, placed on the mesh (centred on its centre of mass, of its radius) and
 // coloured from dark (the worst score) to bright (the best).
-void write_score_sphere(const std::vector<ST::Principal_symmetry<K>>& symmetries, const Mesh& mesh, double low,
+void write_score_sphere(const std::vector<ST::Principal_symmetry<K>>& symmetries, const Soup& soup, double low,
                         double high, const std::string& filename, const std::string& output)
 {
   Mesh sphere = ST::viewpoint_score_sphere(symmetries, 5);
-  const examples::Extent<K::Point_3> extent = examples::extent_of(mesh);
+  const examples::Extent<K::Point_3> extent = examples::extent_of_soup(soup.points, soup.triangles);
   const auto score = sphere.property_map<Mesh::Vertex_index, double>("v:score").first;
   auto colour = sphere.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
   for(Mesh::Vertex_index v : vertices(sphere)) {
@@ -115,24 +120,24 @@ try {
                     seed = options.integer("--seed", 0, 0), views = options.integer("--views", 5);
   const std::string output = options.text("--output", "best_viewpoint.ply");
   options.reject_unknown();
-  const Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
+  const Soup soup = examples::read_triangle_soup<K::Point_3>(filename); // any mesh file, repaired as a soup
 
   // The views are scored by the principal planes: detect them first.
   CGAL::Real_timer timer;
   timer.start();
-  const std::vector<ST::Principal_symmetry<K>> symmetries = ST::detect_principal_symmetries(mesh,
+  const std::vector<ST::Principal_symmetry<K>> symmetries = ST::detect_principal_symmetries_of_triangle_soup(soup.points, soup.triangles,
     CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples and PRST bins per axis
                       number_of_samples(samples).       // Monte Carlo samples of the PRST
                       random_seed(unsigned(seed)));     // the same seed, the same planes
   std::cout << std::setprecision(3) << symmetries.size() << " principal symmetries (grid " << resolution
             << "^3) in " << timer.time() << " s:\n";
-  print_planes(symmetries);
+  print_planes(symmetries, soup);
 
   std::vector<ST::Viewpoint<K>> best; // local maxima of S, best first
   ST::best_viewpoints(symmetries, std::back_inserter(best));
   const ST::Viewpoint<K> worst = ST::worst_viewpoint(symmetries);
   print_views(symmetries, best, worst, views);
-  write_score_sphere(symmetries, mesh, worst.score, best.empty() ? worst.score : best.front().score, filename, output);
+  write_score_sphere(symmetries, soup, worst.score, best.empty() ? worst.score : best.front().score, filename, output);
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {

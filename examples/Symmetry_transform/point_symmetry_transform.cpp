@@ -86,11 +86,11 @@ try {
   const std::size_t resolution = options.integer("--resolution", 64);
   const std::string output = options.text("--output", "point_symmetry_transform.ply");
   options.reject_unknown();
-  const Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
+  const examples::Triangle_soup<K::Point_3> soup = examples::read_triangle_soup<K::Point_3>(filename); // repaired
 
   CGAL::Real_timer timer;
   timer.start();
-  const ST::Point_symmetry_transform<K> pst = ST::point_symmetry_transform(mesh,
+  const ST::Point_symmetry_transform<K> pst = ST::point_symmetry_transform_of_triangle_soup(soup.points, soup.triangles,
     CGAL::parameters::grid_resolution(int(resolution))); // the GEDT on resolution^3 samples, then its PST by FFT
   std::cout << std::setprecision(3) << "PST of " << resolution << "^3 samples in " << timer.time()
             << " s, distance transform included\n";

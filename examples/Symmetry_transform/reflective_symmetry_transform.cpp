@@ -130,11 +130,11 @@ try {
   const ST::Reflective_symmetry_method method = method_of(options.text("--method", "monte-carlo"));
   const std::string output = options.text("--output", "reflective_symmetry_transform.ply");
   options.reject_unknown();
-  const Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
+  const examples::Triangle_soup<K::Point_3> soup = examples::read_triangle_soup<K::Point_3>(filename); // repaired
 
   CGAL::Real_timer timer;
   timer.start();
-  const PRST prst = ST::reflective_symmetry_transform(mesh,
+  const PRST prst = ST::reflective_symmetry_transform_of_triangle_soup(soup.points, soup.triangles,
     CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples and PRST bins (theta, phi, r) per axis
                       prst_method(method).              // Monte Carlo, or the exact convolution (reference)
                       number_of_samples(samples).       // Monte Carlo samples: noise falls as 1/sqrt(samples)
@@ -145,7 +145,7 @@ try {
             << ") in " << timer.time() << " s, distance transform included\n";
 
   print_strongest_planes(prst, planes);
-  write_symmetry_through_vertices(prst, mesh, output);
+  write_symmetry_through_vertices(prst, examples::mesh_of_soup<Mesh>(soup, true), output); // a mesh for the file
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {

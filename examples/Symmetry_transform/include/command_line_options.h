@@ -5,9 +5,10 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_EXAMPLES_COMMAND_LINE_OPTIONS_H
 #define CGAL_SYMMETRY_TRANSFORM_EXAMPLES_COMMAND_LINE_OPTIONS_H
 
-// The command line of the examples: an input file, then `--name value` options and `--flag`s,
-// in any order. An example reads each option it knows once, then calls reject_unknown(), so
-// that a misspelt option stops it before any work instead of being silently ignored.
+// The command line of the examples: an input file (or several, for a batch), `--name value`
+// options and `--flag`s, in any order. An example reads each option it knows once, then calls
+// reject_unknown(), so that a misspelt option stops it before any work instead of being silently
+// ignored.
 
 #include <CGAL/config.h>
 
@@ -27,7 +28,7 @@ public:
   {
     for(int a = 1; a < argc; ++a) {
       const std::string argument = argv[a];
-      if(argument.rfind("--", 0) != 0) { input_file_ = argument; continue; }
+      if(argument.rfind("--", 0) != 0) { inputs_.push_back(argument); continue; }
       if(flags.count(argument) != 0) { values_.emplace(argument, ""); continue; }
       if(a + 1 == argc) throw std::invalid_argument(argument + " expects a value");
       values_.emplace(argument, argv[++a]);
@@ -38,8 +39,11 @@ public:
   // (e.g. "meshes/bull.off", found through the environment variable CGAL_DATA_DIR).
   std::string input_file(const std::string& data_file) const
   {
-    return input_file_.empty() ? CGAL::data_file_path(data_file) : input_file_;
+    return inputs_.empty() ? CGAL::data_file_path(data_file) : inputs_.back();
   }
+
+  // Every argument that is no option, in command-line order (the inputs of a batch).
+  const std::vector<std::string>& inputs() const { return inputs_; }
 
   // The last value of `--name`, an integer of at least `minimum`, or `default_value`.
   std::size_t integer(const std::string& name, std::size_t default_value, std::size_t minimum = 1) const
@@ -97,7 +101,7 @@ private:
     return values.empty() ? std::string() : values.back();
   }
 
-  std::string input_file_;
+  std::vector<std::string> inputs_;
   std::multimap<std::string, std::string> values_; // equal keys keep their command-line order
   mutable std::set<std::string> known_;            // the options asked for so far
 };

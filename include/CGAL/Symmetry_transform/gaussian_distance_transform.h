@@ -72,6 +72,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
+ *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
  *
@@ -94,6 +95,48 @@ gaussian_distance_transform_of_points(const PointRange& points,
     internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
   const internal::Shape_frame frame = internal::frame_of_points(samples);
   return internal::gaussian_distance_transform_of_points<GT>(samples, frame, internal::grid_settings(np, frame.radius));
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformGridRef
+ *
+ * Computes the Gaussian Euclidean Distance Transform of a triangle soup, as
+ * `gaussian_distance_transform()` does for a mesh: \f$ d(x) \f$ is the distance to the union of
+ * the triangles, the grid is centred on their area-weighted centre of mass. The soup needs no
+ * repair (\ref SymmetryTransformRealWorld): orientation, duplicated or unreferenced points,
+ * non-manifold edges and components do not matter; degenerate triangles (zero area) are ignored.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ *         (as `std::array<std::size_t, 3>`), as `CGAL::Polygon_mesh_processing::sample_triangle_soup()` takes
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the triangles
+ * and whose `radius()` is the largest distance from it to a corner of a non-degenerate triangle.
+ *
+ * \throws std::invalid_argument if a triangle refers to a point out of range or has not three
+ * corners, if there is no triangle or only degenerate ones, if a corner has a NaN or infinite
+ * coordinate, or if the grid parameters are invalid or the grid does not fit in memory.
+*/
+template <typename PointRange, typename TriangleRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+Voxel_grid<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+gaussian_distance_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                                             const NamedParameters& np = parameters::default_values())
+{
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_soup(points, triangles, np), np);
 }
 
 } // namespace CGAL::Symmetry_transform

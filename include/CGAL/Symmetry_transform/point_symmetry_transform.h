@@ -238,6 +238,7 @@ point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = par
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
+ *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
  *
@@ -250,6 +251,39 @@ Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, N
 point_symmetry_transform_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   return point_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformPSTRef
+ *
+ * Computes the Point Symmetry Transform of a triangle soup: its GEDT by
+ * `gaussian_distance_transform_of_triangle_soup(points, triangles, np)`, then `point_symmetry_transform()` of that grid.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Point Symmetry Transform of the GEDT of the soup
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_triangle_soup()` and the overload on grids.
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+point_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                                          const NamedParameters& np = parameters::default_values())
+{
+  return point_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np);
 }
 
 } // namespace CGAL::Symmetry_transform

@@ -17,6 +17,8 @@
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 
+#include <array>
+#include <utility>
 #include <vector>
 
 namespace CGAL::Symmetry_transform {
@@ -111,8 +113,11 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
  * \ingroup PkgSymmetryTransformPrincipalRef
  *
  * Computes the principal symmetries of a point set, as `detect_principal_symmetries()` does for
- * a mesh, with ISP matching the reflected points to their nearest points (`CGAL::Kd_tree`) and
- * fitting the plane to the pairs of points (\ref SymmetryTransformPrincipal).
+ * a mesh, with ISP matching the reflected points to their nearest points (`CGAL::Kd_tree`). With
+ * the normals of the points (`normal_map`, as most scans have them), the plane is fitted to the
+ * tangent planes at the matches, as on a mesh (point to plane); without, to the pairs of points
+ * (point to point), which the spacing of the points limits (\ref SymmetryTransformPrincipal,
+ * \ref SymmetryTransformRealWorld).
  *
  * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
  * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
@@ -133,12 +138,14 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
+ *   \cgalParamNormalMap{if given\, ISP fits the plane point to plane with the normal of the point nearest to each
+ *                       mirror image\, whose orientation does not matter; a zero normal leaves its point out of the fit}
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
  * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform_of_points()`
- * and `reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
+ * and `reflective_symmetry_transform()`, a NaN or infinite normal, or if `number_of_refinement_samples` is 0.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
@@ -146,6 +153,23 @@ detect_principal_symmetries_of_points(const PointRange& points, const NamedParam
 {
   return internal::detection_of_points(points, np).symmetries;
 }
+
+namespace internal {
+
+// refine_symmetry_plane() on the triangles of a mesh or of a soup.
+template <typename GT, typename NamedParameters>
+typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typename GT::Plane_3& plane,
+                                   const NamedParameters& np)
+{
+  const Detection_settings settings = detection_settings(np);
+  const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
+  const Isp_settings isp = isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
+  return to_plane<GT>(iterative_symmetric_points(surface_samples(surface.triangles, settings.sampling), to_dplane(plane),
+                                                 surface.matcher, isp, Isp_phase::BOTH, {}, &surface.field)
+                        .plane);
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgSymmetryTransformPrincipalRef
@@ -184,15 +208,7 @@ refine_symmetry_plane(const TriangleMesh& tm,
                       const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, np);
-  const internal::Detection_settings settings = internal::detection_settings(np);
-  const internal::Triangle_surface<GT> surface(std::move(triangles), settings.grid);
-  const internal::Isp_settings isp = internal::isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
-  return internal::to_plane<GT>(internal::iterative_symmetric_points(internal::surface_samples(surface.triangles,
-                                                                                               settings.sampling),
-                                                                     internal::to_dplane(plane), surface.matcher, isp,
-                                                                     internal::Isp_phase::BOTH, {}, &surface.field)
-                                  .plane);
+  return internal::refined_plane<GT>(internal::triangles_of_mesh(tm, np), plane, np);
 }
 
 /*!
@@ -240,6 +256,150 @@ double symmetry_support(const TriangleMesh& tm,
     put(face_support_map, supports.faces[f], supports.support[f]);
     supported += supports.area[f] * supports.support[f];
     total += supports.area[f];
+  }
+  return supported / total;
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Computes the principal symmetries of a triangle soup, as `detect_principal_symmetries()` does
+ * for a mesh. The soup needs no repair (\ref SymmetryTransformRealWorld): orientation, duplicated
+ * or unreferenced points, non-manifold edges and components do not matter, degenerate triangles
+ * are ignored, and a triangle given twice (a double-sided face) counts twice in the area (the
+ * centre of mass, hence the grid, and the samples that ISP reflects), which moves no exact plane.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ *         (as `std::array<std::size_t, 3>`), as `CGAL::Polygon_mesh_processing::sample_triangle_soup()` takes
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPrstMethod
+ *   \cgalParamDetectionSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRefinementSamples
+ *   \cgalParamIspIterations
+ *   \cgalParamMaxPlanes
+ *   \cgalParamsCandidateThresholds
+ *   \cgalParamRandomSeed{the seed of the surface samples and of the transform}
+ *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the principal symmetries, strongest first.
+ * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform_of_triangle_soup()`
+ * and `reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
+detect_principal_symmetries_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                                             const NamedParameters& np = parameters::default_values())
+{
+  return internal::detection_of_triangle_soup(points, triangles, np).symmetries;
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Refines a rough plane of symmetry of a triangle soup by Iterative Symmetric Points, as
+ * `refine_symmetry_plane()` does for a mesh (\ref SymmetryTransformPrincipal).
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param plane the starting plane
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamRefinementSamples
+ *   \cgalParamIspIterations
+ *   \cgalParamRandomSeed{the seed of the surface samples}
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected
+ * sample lies near the surface.
+ * \throws std::invalid_argument if `plane` is degenerate, on the bad inputs of
+ * `gaussian_distance_transform_of_triangle_soup()`, or if `number_of_refinement_samples` is 0.
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3
+refine_symmetry_plane_of_triangle_soup(
+  const PointRange& points, const TriangleRange& triangles,
+  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  const NamedParameters& np = parameters::default_values())
+{
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::refined_plane<GT>(internal::triangles_of_soup(points, triangles, np), plane, np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ *
+ * Computes how much each triangle of a triangle soup supports the reflection through `plane`, as
+ * `symmetry_support()` does for the faces of a mesh, the distances being to the union of the
+ * triangles. Every triangle gets a value, in the order of `triangles`, degenerate ones too.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam OutputIterator an output iterator accepting `double`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param plane the plane of reflection
+ * \param supports receives the support of each triangle, in \f$ [0,1] \f$, in the order of `triangles`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the supported fraction of the area: the area-weighted mean of the triangle supports
+ * (a triangle given twice counts twice).
+ * \throws std::invalid_argument if `plane` is degenerate, or on the bad inputs of
+ * `gaussian_distance_transform_of_triangle_soup()`.
+*/
+template <typename PointRange, typename TriangleRange, typename OutputIterator,
+          typename NamedParameters = parameters::Default_named_parameters>
+double symmetry_support_of_triangle_soup(
+  const PointRange& points, const TriangleRange& triangles,
+  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  OutputIterator supports, const NamedParameters& np = parameters::default_values())
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  const std::vector<internal::Dtriangle> all =
+    internal::all_triangles_of_soup(points, triangles, NP_helper::get_const_point_map(points, np));
+  const std::vector<internal::Dtriangle> surface = internal::non_degenerate_triangles_of_soup(all);
+  const internal::Triangle_matcher matcher(surface);
+  const internal::Grid_settings grid = internal::grid_settings(np, internal::frame_of_triangles(surface).radius);
+  std::vector<double> support, area;
+  internal::triangle_supports(all.size(), [&all](std::size_t f) {
+      return std::array<Eigen::Vector3d, 3>{internal::to_eigen(all[f][0]), internal::to_eigen(all[f][1]),
+                                            internal::to_eigen(all[f][2])};
+    }, matcher, internal::to_dplane(plane), grid.sigma(), grid.threads, support, area);
+  double supported = 0., total = 0.;
+  for(std::size_t f = 0; f < all.size(); ++f) {
+    *supports++ = support[f];
+    supported += area[f] * support[f];
+    total += area[f];
   }
   return supported / total;
 }

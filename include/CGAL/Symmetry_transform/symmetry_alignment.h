@@ -68,6 +68,7 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
  *
  * \cgalNamedParamsBegin
  *   \cgalParamPointMap
+ *   \cgalParamNormalMap{passed on to `detect_principal_symmetries_of_points()`: with normals\, ISP fits point to plane}
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
  *
@@ -133,6 +134,7 @@ pca_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::defaul
  * \cgalNamedParamsBegin
  *   \cgalParamGeomTraits
  *   \cgalParamPointMap
+ *   \cgalParamNormalMap{not read: the mass is that of the points}
  * \cgalNamedParamsEnd
  *
  * \returns the frame of the centre of mass and the principal axes.
@@ -145,6 +147,77 @@ pca_frame_of_points(const PointRange& points, const NamedParameters& np = parame
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   return internal::to_symmetry_frame<GT>(internal::pca_frame(internal::mass_of_points(points, np)));
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformAlignmentRef
+ *
+ * Computes the symmetry frame of a triangle soup, by the rules of `symmetry_frame()`, from the
+ * principal symmetries that `detect_principal_symmetries_of_triangle_soup(points, triangles, np)`
+ * finds. The mass is the area of the soup's triangles, as a mesh's is the area of its faces: a
+ * triangle given twice (a double-sided face) weighs twice, which can move the centre of mass but
+ * not the centre of symmetry, the intersection of the planes.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those listed below,
+ *           and those of `detect_principal_symmetries_of_triangle_soup()`, which are passed on to it
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
+ * \throws std::invalid_argument on the bad inputs of `detect_principal_symmetries_of_triangle_soup()`
+ *         (no triangle, an index out of range, all triangles degenerate, NaN or infinite coordinate, ...).
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+symmetry_frame_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                                const NamedParameters& np = parameters::default_values())
+{
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  const internal::Mass_distribution mass(internal::triangles_of_soup(points, triangles, np));
+  const internal::Detection<GT> detection = internal::detection_of_triangle_soup(points, triangles, np);
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detection.symmetries, detection.prst));
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformAlignmentRef
+ *
+ * Computes the classical canonical frame of a triangle soup, as `pca_frame()` does for a mesh,
+ * with the area of the soup's triangles as mass.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among those listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the frame of the centre of mass and the principal axes.
+ * \throws std::invalid_argument on no triangle, an index out of range, all triangles degenerate,
+ *         or a NaN or infinite coordinate.
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+pca_frame_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                           const NamedParameters& np = parameters::default_values())
+{
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::to_symmetry_frame<GT>(internal::pca_frame(internal::Mass_distribution(
+    internal::triangles_of_soup(points, triangles, np))));
 }
 
 /*!

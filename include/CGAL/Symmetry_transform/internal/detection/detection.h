@@ -90,6 +90,18 @@ Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detect
   return detection_of_surface(surface, settings, np);
 }
 
+// The detection on the non-degenerate triangles of a soup, which needs no repair.
+template <typename PointRange, typename TriangleRange, typename NamedParameters>
+Detection<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+detection_of_triangle_soup(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
+{
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  const Detection_settings settings = detection_settings(np);
+  const Triangle_surface<GT> surface(triangles_of_soup(points, triangles, np), settings.grid);
+  return detection_of_surface(surface, settings, np);
+}
+
+// With a `normal_map`, ISP matches with the normals of the points and fits point to plane.
 template <typename PointRange, typename NamedParameters>
 Detection<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
 detection_of_points(const PointRange& points, const NamedParameters& np)
@@ -102,10 +114,15 @@ detection_of_points(const PointRange& points, const NamedParameters& np)
   const Grid_settings grid = grid_settings(settings.grid, frame.radius);
   const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(shape, frame, grid);
   Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
-  const Point_matcher matcher(shape);
-  std::vector<Principal_symmetry<GT>> symmetries =
-    refine_candidates(gedt, prst, point_samples(shape, settings.sampling), matcher,
-                      isp_settings(grid, settings.isp_iterations, gedt), settings.candidates);
+  auto refined = [&](const auto& matcher) {
+    return refine_candidates(gedt, prst, point_samples(shape, settings.sampling), matcher,
+                             isp_settings(grid, settings.isp_iterations, gedt), settings.candidates);
+  };
+  std::vector<Principal_symmetry<GT>> symmetries;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value)
+    symmetries = refined(Oriented_point_matcher(shape, unit_normals_of_range(points, NP_helper::get_normal_map(points, np))));
+  else
+    symmetries = refined(Point_matcher(shape));
   return {std::move(symmetries), std::move(prst)};
 }
 

@@ -33,8 +33,32 @@ inline std::array<Eigen::Vector3d, 4> face_support_points(const Eigen::Vector3d&
           Eigen::Vector3d((a + 4. * b + c) / 6.), Eigen::Vector3d((a + b + 4. * c) / 6.)};
 }
 
-// The support of the reflection through `mirror` and the area of each face of `faces`, from the
-// exact closest points of `matcher`, computed in parallel.
+// The support of the reflection through `mirror` and the area of `count` triangles, those of
+// triangle f being corners(f) (three Eigen::Vector3d), from the exact closest points of
+// `matcher`, computed in parallel (symmetry_support() of a mesh or of a soup).
+template <typename Corners>
+void triangle_supports(std::size_t count, const Corners& corners, const Triangle_matcher& matcher, const Dplane& mirror,
+                       double sigma, unsigned threads, std::vector<double>& support, std::vector<double>& area)
+{
+  support.resize(count);
+  area.resize(count);
+  parallel_for(count, threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t f = begin; f < end; ++f) {
+      const std::array<Eigen::Vector3d, 3> v = corners(f);
+      const Eigen::Vector3d &a = v[0], &b = v[1], &c = v[2];
+      area[f] = 0.5 * (b - a).cross(c - a).norm();
+      const std::array<Eigen::Vector3d, 4> points = face_support_points(a, b, c);
+      double sum = 0.;
+      for(const Eigen::Vector3d& p : points) {
+        const Eigen::Vector3d image = mirror.reflect(p);
+        sum += std::exp(-(image - matcher.closest(image).first).squaredNorm() / (2. * sigma * sigma));
+      }
+      support[f] = sum / double(points.size());
+    }
+  });
+}
+
+// The same for each face of a mesh.
 template <typename TriangleMesh>
 struct Face_supports
 {
@@ -49,24 +73,13 @@ Face_supports<TriangleMesh> face_supports(const TriangleMesh& tm, const VertexPo
 {
   Face_supports<TriangleMesh> result;
   result.faces.assign(faces(tm).begin(), faces(tm).end());
-  result.support.resize(result.faces.size());
-  result.area.resize(result.faces.size());
-  parallel_for(result.faces.size(), threads, [&](unsigned, std::size_t begin, std::size_t end) {
-    for(std::size_t f = begin; f < end; ++f) {
-      const auto h = halfedge(result.faces[f], tm);
-      const Eigen::Vector3d a = to_eigen(to_dpoint(get(vpm, source(h, tm)))),
-                            b = to_eigen(to_dpoint(get(vpm, target(h, tm)))),
-                            c = to_eigen(to_dpoint(get(vpm, target(next(h, tm), tm))));
-      result.area[f] = 0.5 * (b - a).cross(c - a).norm();
-      const std::array<Eigen::Vector3d, 4> points = face_support_points(a, b, c);
-      double sum = 0.;
-      for(const Eigen::Vector3d& p : points) {
-        const Eigen::Vector3d image = mirror.reflect(p);
-        sum += std::exp(-(image - matcher.closest(image).first).squaredNorm() / (2. * sigma * sigma));
-      }
-      result.support[f] = sum / double(points.size());
-    }
-  });
+  auto corners = [&](std::size_t f) {
+    const auto h = halfedge(result.faces[f], tm);
+    return std::array<Eigen::Vector3d, 3>{to_eigen(to_dpoint(get(vpm, source(h, tm)))),
+                                          to_eigen(to_dpoint(get(vpm, target(h, tm)))),
+                                          to_eigen(to_dpoint(get(vpm, target(next(h, tm), tm))))};
+  };
+  triangle_supports(result.faces.size(), corners, matcher, mirror, sigma, threads, result.support, result.area);
   return result;
 }
 

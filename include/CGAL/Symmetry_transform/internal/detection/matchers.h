@@ -9,8 +9,9 @@
 // soup (AABB tree), approximate on a triangle soup (the closest triangles recorded with the
 // GEDT), and on a point set (Kd-tree). Each offers
 //   Match closest(const Eigen::Vector3d& p, Hint& hint) const
-// the closest point to p and the unit normal of the surface there (zero on a point set); `hint`
-// holds the match of a nearby point if `hint.valid`, a start for the search, and receives this one.
+// the closest point to p and the unit normal of the surface there (zero on a point set without
+// normals); `hint` holds the match of a nearby point if `hint.valid`, a start for the search, and
+// receives this one.
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
@@ -159,11 +160,15 @@ private:
   long resolution_;
 };
 
-// Closest points of a point set (no normals).
-class Point_matcher
+// Closest points of a point set. Without normals (Point_matcher) the normal of a match is zero
+// and ISP fits the plane point to point; with the unit normals of the points
+// (Oriented_point_matcher: a point set with a normal_map) it is the normal of the closest point,
+// whose orientation does not matter, and ISP fits point to plane as on a mesh.
+template <bool with_normals>
+class Point_set_matcher
 {
 public:
-  static constexpr bool has_normals = false;
+  static constexpr bool has_normals = with_normals;
 
   // Nothing to start from: a Kd-tree search is cheap.
   struct Hint
@@ -171,17 +176,28 @@ public:
     bool valid = false;
   };
 
-  explicit Point_matcher(const std::vector<Dpoint>& points) : nearest_(points) {}
+  explicit Point_set_matcher(const std::vector<Dpoint>& points) : nearest_(points) {}
+
+  // `unit_normals`: one per point, in the order of `points` (zero where a point has none).
+  Point_set_matcher(const std::vector<Dpoint>& points, std::vector<Eigen::Vector3d> unit_normals)
+    : nearest_(points), normals_(std::move(unit_normals))
+  {}
 
   Match closest(const Eigen::Vector3d& p, Hint& hint) const
   {
     hint.valid = true;
-    return {to_eigen(nearest_.point(nearest_(p).index)), Eigen::Vector3d::Zero()};
+    const std::size_t i = nearest_(p).index;
+    if constexpr(with_normals) return {to_eigen(nearest_.point(i)), normals_[i]};
+    else return {to_eigen(nearest_.point(i)), Eigen::Vector3d::Zero()};
   }
 
 private:
   Nearest_point nearest_;
+  std::vector<Eigen::Vector3d> normals_;
 };
+
+typedef Point_set_matcher<false> Point_matcher;
+typedef Point_set_matcher<true> Oriented_point_matcher;
 
 } // namespace CGAL::Symmetry_transform::internal
 
