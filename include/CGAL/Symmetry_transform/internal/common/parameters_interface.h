@@ -28,3 +28,4 @@ CGAL_add_named_parameter(st_max_number_of_segments_t, st_max_number_of_segments,
 CGAL_add_named_parameter(st_smoothing_lambda_t, st_smoothing_lambda, smoothing_lambda)
 CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentation_tree)
 // end of segmentation
+CGAL_add_named_parameter(st_max_order_t, st_max_order, max_order)
