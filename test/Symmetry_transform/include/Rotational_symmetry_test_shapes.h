@@ -29,11 +29,23 @@ struct Soup
   std::vector<Point_3> points;
   std::vector<std::array<std::size_t, 3>> triangles;
 
+  // The mesh, each face starting at the first corner of its triangle (Polyhedron_3 may start them
+  // elsewhere): the surface samples, drawn triangle by triangle from the first corner, are the
+  // same for every mesh type.
   template <typename Mesh>
   Mesh mesh() const
   {
     Mesh m;
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m);
+    std::size_t i = 0;
+    for(auto f : faces(m)) {
+      const Point_3& first = points[triangles[i++][0]];
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, m), m))
+        if(get(CGAL::vertex_point, m, source(h, m)) == first) {
+          set_halfedge(f, h, m);
+          break;
+        }
+    }
     return m;
   }
 
@@ -67,8 +79,8 @@ struct Soup
 // section shrinking linearly to 1 - taper at the top (so no 2-fold axis across z) and turning by
 // `twist_degrees` from bottom to top. Untwisted: the k-fold axis z and k mirror planes through
 // it. Twisted: the axis z alone, no mirror plane (a screw-like, chiral solid).
-template <typename Mesh>
-Mesh star_solid(int k, double twist_degrees, int layers = 8, double inner = 0.5, double height = 1.2, double taper = 0.45)
+inline Soup star_solid_soup(int k, double twist_degrees, int layers = 8, double inner = 0.5, double height = 1.2,
+                            double taper = 0.45)
 {
   Soup soup;
   const double twist = twist_degrees * CGAL_PI / 180.;
@@ -77,7 +89,13 @@ Mesh star_solid(int k, double twist_degrees, int layers = 8, double inner = 0.5,
     const double a = CGAL_PI * double(i) / double(k) + twist * t;
     return Point_3(s * std::cos(a), s * std::sin(a), height * (t - 0.5));
   }, Point_3(0, 0, -height / 2.), Point_3(0, 0, height / 2.));
-  return soup.mesh<Mesh>();
+  return soup;
+}
+
+template <typename Mesh>
+Mesh star_solid(int k, double twist_degrees)
+{
+  return star_solid_soup(k, twist_degrees).mesh<Mesh>();
 }
 
 // A box of half-sides a, b, c, centred at (radius, skew, z), tilted by `pitch` about the
