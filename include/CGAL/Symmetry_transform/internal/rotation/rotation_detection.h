@@ -16,6 +16,7 @@
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
 #include <CGAL/Symmetry_transform/internal/rotation/coarse_alignment.h>
 #include <CGAL/Symmetry_transform/internal/rotation/defaults.h>
+#include <CGAL/Symmetry_transform/internal/rotation/group_closure.h>
 #include <CGAL/Symmetry_transform/internal/rotation/rotation_order.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 
@@ -52,6 +53,9 @@ constexpr double min_sharp_overlap = 0.6;
 // orders' divisors, the axes of inertia and the search of directions).
 constexpr std::size_t max_aligned_candidates = 24;
 constexpr std::size_t max_refined_axes = 16;
+// The group closure stops at this many axes: the largest finite rotation group has 31 (the
+// icosahedron's 6 five-fold, 10 three-fold and 15 two-fold axes).
+constexpr std::size_t max_group_axes = 31;
 // Two axes are the same when their directions are within 2 degrees and each passes within 2 % of
 // the radius of the other's point nearest to the centre: refined axes of one symmetry agree to
 // far less, coarse ones to about a degree.
@@ -272,6 +276,38 @@ std::vector<Rotational_symmetry<GT>> merged(std::vector<Found_rotation<GT>> foun
   return result;
 }
 
+// The axes of the group the found ones generate (group_closure.h), refined and tested, added to
+// `found`, until no new one holds (three rounds at most: enough for the dihedral groups, whose
+// second class of 2-fold axes comes from products of the first, and for the cube's). The flips
+// about a continuous axis are left out, as generators and as results: they generate one another
+// without end, and one of them stands for all.
+template <typename GT, typename M, typename W>
+void close_group(const Rotation_search<GT, M, W>& s, const std::vector<Eigen::Vector3d>& order_probes,
+                 std::vector<Found_rotation<GT>>& found)
+{
+  const Eigen::Vector3d center = s.mass.center();
+  const double radius = s.mass.radius();
+  auto flip_of_continuous = [&](const Daxis& axis) {
+    return std::any_of(found.begin(), found.end(), [&](const Found_rotation<GT>& f) {
+      return f.symmetry.order == 0 && (parallel_axes(axis, f.axis) || meets_at_right_angle(axis, f.axis, radius, 1.));
+    });
+  };
+  for(int round = 0; round < 3; ++round) {
+    std::vector<Axis_candidate> discrete;
+    for(const Found_rotation<GT>& f : found)
+      if(f.symmetry.order >= 2 && !flip_of_continuous(f.axis)) discrete.push_back({f.axis, f.symmetry.order, 0.});
+    const std::vector<Axis_candidate> generated = group_closure(
+      discrete, s.max_order, center, radius, [&](const Daxis& a, const Daxis& b) { return same_axis(a, b, center, radius); });
+    const std::size_t before = found.size();
+    for(const Axis_candidate& c : generated) {
+      if(found.size() == max_group_axes) break;
+      if(flip_of_continuous(c.axis)) continue;
+      if(std::optional<Found_rotation<GT>> f = refined_rotation(s, c, order_probes, found)) found.push_back(*f);
+    }
+    if(found.size() == before) break;
+  }
+}
+
 // The rotational symmetries found from the axes of inertia, the search of directions and the
 // `extra` candidates (the meeting lines of known planes), strongest first.
 template <typename GT, typename M, typename W>
@@ -301,6 +337,8 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
     flip_refined = flip_refined || flip;
     if(std::optional<Found_rotation<GT>> f = refined_rotation(s, c, order_probes, found)) found.push_back(*f);
   }
+  close_group(s, order_probes, found);
+  if(s.verbose) std::cerr << "  " << found.size() << " axes (" << seconds() << " s)\n";
   return merged(std::move(found), center, s.mass.radius());
 }
 
