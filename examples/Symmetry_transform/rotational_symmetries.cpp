@@ -12,6 +12,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <CGAL/Symmetry_transform/rotational_symmetries.h>
@@ -129,13 +130,20 @@ try {
   std::cout << std::setprecision(3) << symmetries.size() << " rotational symmetries (grid " << resolution << "^3) in "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n"
             << "order 0: continuous; support: the fraction of the area the rotation maps onto the surface\n"
-            << "   #  order  point on the axis (nearest to the centre of mass)   direction               symmetry  support\n"
+            << "   #  order  point on the axis (nearest to the    direction                 symmetry  support\n"
+            << "             centre of mass)\n"
             << std::fixed;
+  auto triple = [](double x, double y, double z) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(3) << "(" << std::setw(8) << x << std::setw(8) << y << std::setw(8) << z << ")";
+    return out.str();
+  };
   for(std::size_t i = 0; i < symmetries.size(); ++i) {
     const auto& s = symmetries[i];
-    std::cout << std::setw(4) << i + 1 << std::setw(7) << s.order << "  (" << std::setw(9) << s.axis.point() << ")  ("
-              << std::setw(6) << s.axis.to_vector() << ")  " << std::setw(8) << s.symmetry << std::setw(9) << s.support
-              << "\n";
+    const K::Point_3 p = s.axis.point();
+    const K::Vector_3 d = s.axis.to_vector();
+    std::cout << std::setw(4) << i + 1 << std::setw(7) << s.order << "  " << triple(p.x(), p.y(), p.z()) << "  "
+              << triple(d.x(), d.y(), d.z()) << std::setw(10) << s.symmetry << std::setw(9) << s.support << "\n";
   }
 
   // The mesh and its axes; the axes reach 20 % beyond the bounding box's half-diagonal.

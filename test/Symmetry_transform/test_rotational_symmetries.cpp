@@ -368,7 +368,8 @@ TEST(RotationalSymmetries, SameSeedGivesIdenticalAxes)
 }
 
 // As documented: the axis passes through its point nearest to the centre of mass, and its
-// direction is a unit vector whose largest coordinate is positive.
+// direction is a unit vector whose largest coordinate is positive; the axes are sorted by
+// symmetry measure to three decimals, then by decreasing order.
 TEST(RotationalSymmetries, AxisIsTheDocumentedRepresentative)
 {
   CGAL::Random rng(1713);
@@ -384,6 +385,20 @@ TEST(RotationalSymmetries, AxisIsTheDocumentedRepresentative)
     EXPECT_TRUE(d.x() == largest || d.y() == largest || d.z() == largest) << d;
   }
   for(std::size_t i = 1; i < found.size(); ++i) EXPECT_GE(found[i - 1].symmetry, found[i].symmetry);
+  // A 6-fold star solid with its mirror planes: the 6-fold axis only (no flip). A box's three
+  // flips measure alike; a hexagonal prism (the star without taper) has a 6-fold axis and six
+  // flips measuring alike: the 6-fold one first.
+  Soup prism = star_solid_soup(6, 0., 2, 0.5, 1.2, 0.);
+  Surface_mesh mesh = prism.mesh<Surface_mesh>();
+  CGAL::Polygon_mesh_processing::transform(random_motion(rng), mesh);
+  const Rotations axes = ST::detect_rotational_symmetries(mesh, defaults);
+  std::cout << "untapered 6-pointed star prism:\n" << describe(axes, center_and_radius(mesh));
+  ASSERT_EQ(axes.size(), 7u);
+  EXPECT_EQ(axes.front().order, 6);
+  for(std::size_t i = 1; i < axes.size(); ++i) {
+    EXPECT_EQ(axes[i].order, 2);
+    EXPECT_GE(std::lround(1000. * axes[i - 1].symmetry), std::lround(1000. * axes[i].symmetry));
+  }
 }
 
 // ------------------------------------------------------------------------------------------

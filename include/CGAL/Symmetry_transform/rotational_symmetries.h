@@ -87,7 +87,10 @@ with them, and its width \f$ \sigma \f$ sets the Gaussian weights of the refinem
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the rotational symmetries, strongest (largest `symmetry`) first.
+\returns the rotational symmetries, strongest first: by decreasing `symmetry` rounded to three
+decimals (the measures of exact symmetries differ by their interpolation errors, about
+\f$ 10^{-4} \f$), then continuous ones first and by decreasing order (the main axis of a gear
+before its flips), then by decreasing `symmetry`.
 \throws std::invalid_argument if `max_order` is below 2, or on the bad inputs of `gaussian_distance_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>

@@ -38,17 +38,28 @@ inline std::vector<double> refinement_angles(int k)
 // samples themselves. f = C exp(-d^2 / 2 sigma^2), so f^p / C^p is the Gaussian weight of the
 // distance d to the surface at the width sigma / sqrt(p): p = 1 gives the support at sigma,
 // p = 4 the sharper one at sigma / 2. 1 when the rotation maps the shape onto itself.
+//
+// The searches maximise it less centre_preference times the distance from the axis to the centre
+// of mass over the radius: where it is flat, they settle on the axis nearest to the centre (a
+// long uniform bar is mapped onto itself almost as well by its flips about any point along it;
+// the rotations of a whole shape fix its centre of mass). The preference, 1e-3 over a distance
+// of R, moves a true peak by nothing measurable.
+constexpr double centre_preference = 1e-3;
+
 template <typename GT>
 class Gedt_overlap
 {
 public:
-  // `sigma`: the Gaussian width of `gedt`, in the units of the points.
-  Gedt_overlap(const Voxel_grid<GT>& gedt, std::vector<Eigen::Vector3d> samples, double sigma, int power = 1)
-    : gedt_(gedt), samples_(std::move(samples)), sigma_(sigma), power_(power)
+  // `sigma`: the Gaussian width of `gedt`, in the units of the points; `center`, `radius`: the
+  // shape's centre of mass and radius.
+  Gedt_overlap(const Voxel_grid<GT>& gedt, std::vector<Eigen::Vector3d> samples, double sigma,
+               const Eigen::Vector3d& center, double radius, int power = 1)
+    : gedt_(gedt), samples_(std::move(samples)), sigma_(sigma), center_(center), radius_(radius), power_(power)
   {
     for(const Eigen::Vector3d& x : samples_) self_ += value(x);
   }
 
+  // The overlap less the preference for the centre.
   double operator()(const Daxis& axis, const std::vector<double>& angles) const
   {
     if(!(self_ > 0.)) return 0.;
@@ -57,7 +68,7 @@ public:
       const Rigid_motion r = axis.rotation(angle);
       for(const Eigen::Vector3d& x : samples_) sum += value(r(x));
     }
-    return sum / (self_ * double(angles.size()));
+    return sum / (self_ * double(angles.size())) - centre_preference * axis.distance(center_) / radius_;
   }
 
   // The width of the weights, in the units of the points.
@@ -75,6 +86,8 @@ private:
   const Voxel_grid<GT>& gedt_;
   std::vector<Eigen::Vector3d> samples_;
   double sigma_;
+  Eigen::Vector3d center_;
+  double radius_;
   int power_;
   double self_ = 0.;
 };

@@ -120,9 +120,9 @@ std::vector<Axis_candidate> coarse_axes(const Rotation_search<GT, M, W>& s, std:
 {
   const Eigen::Vector3d center = s.mass.center();
   const double radius = s.mass.radius();
-  const Gedt_overlap<GT> placing(s.coarse_gedt, spread_subset(s.samples, axis_point_samples), s.coarse_sigma);
-  const Gedt_overlap<GT> aligning(s.coarse_gedt, spread_subset(s.samples, alignment_samples), s.coarse_sigma);
-  const Gedt_overlap<GT> sharp(s.gedt, spread_subset(s.samples, alignment_samples), s.settings.sigma, 4);
+  const Gedt_overlap<GT> placing(s.coarse_gedt, spread_subset(s.samples, axis_point_samples), s.coarse_sigma, center, radius);
+  const Gedt_overlap<GT> aligning(s.coarse_gedt, spread_subset(s.samples, alignment_samples), s.coarse_sigma, center, radius);
+  const Gedt_overlap<GT> sharp(s.gedt, spread_subset(s.samples, alignment_samples), s.settings.sigma, center, radius, 4);
   for(Axis_candidate& c : candidates)
     c.axis = best_axis_point(placing, c.axis.point, radius, c.axis.direction, refinement_angles(c.order), c.score);
   std::stable_sort(candidates.begin(), candidates.end(),
@@ -241,13 +241,47 @@ bool says_more(const Rotational_symmetry<GT>& a, const Rotational_symmetry<GT>& 
   return a.support > b.support;
 }
 
+// The rotations of a bounded shape fix its centre of mass: their axes meet there (for a part of a
+// shape, at the centre of the symmetric part). Whether `axis` passes within `distance` of the
+// point where the `axes` meet (the point nearest to all of them in the least-squares sense), or
+// meets the only one.
+inline bool concurrent(const Daxis& axis, const std::vector<Daxis>& axes, double distance)
+{
+  if(axes.empty()) return true;
+  Eigen::Matrix3d normal_equations = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right = Eigen::Vector3d::Zero();
+  for(const Daxis& a : axes) {
+    const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - a.direction * a.direction.transpose();
+    normal_equations += across;
+    right += across * a.point;
+  }
+  if(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(normal_equations).eigenvalues()[0] < 1e-6)
+    return line_distance(axis, axes.front()) < distance; // all parallel: one line, in effect
+  return axis.distance(normal_equations.ldlt().solve(right)) < distance;
+}
+
+// Strongest first: the larger symmetry measure to three decimals (the measures of exact
+// symmetries differ by their interpolation errors, about 1e-4), then the one that says more
+// (continuous, then the larger order: the main axis of a gear before its flips), then the
+// larger symmetry measure.
+template <typename GT>
+bool stronger(const Rotational_symmetry<GT>& a, const Rotational_symmetry<GT>& b)
+{
+  const long ka = std::lround(1000. * CGAL::to_double(a.symmetry)), kb = std::lround(1000. * CGAL::to_double(b.symmetry));
+  if(ka != kb) return ka > kb;
+  if((a.order == 0) != (b.order == 0)) return a.order == 0;
+  if(a.order != b.order) return a.order > b.order;
+  return a.symmetry > b.symmetry;
+}
+
 // The found rotations with duplicates merged (of two on the same line, the one that says more;
 // of two parallel ones, the better supported), and, about each continuous axis, one 2-fold axis
 // perpendicular to it and through it: the others are its images by the continuous rotations
-// (the flips of a cylinder). Strongest first.
+// (the flips of a cylinder). Strongest first; an axis that misses the common point of stronger
+// ones is left out (the approximate flips about points along a long bar, for one).
 template <typename GT>
-std::vector<Rotational_symmetry<GT>> merged(std::vector<Found_rotation<GT>> found, const Eigen::Vector3d& center,
-                                            double radius)
+std::vector<Found_rotation<GT>> consistent(std::vector<Found_rotation<GT>> found, const Eigen::Vector3d& center,
+                                           double radius)
 {
   auto keep_first = [&](const auto& precedes, const auto& same) {
     std::stable_sort(found.begin(), found.end(), precedes);
@@ -268,16 +302,26 @@ std::vector<Rotational_symmetry<GT>> merged(std::vector<Found_rotation<GT>> foun
                return parallel_axes(f.axis, k.axis) ||
                       std::any_of(all.begin(), all.end(), [&](const auto& c) { return flip_of(f, c) && flip_of(k, c); });
              });
-  std::vector<Rotational_symmetry<GT>> result;
-  for(const Found_rotation<GT>& f : found) result.push_back(f.symmetry);
-  std::stable_sort(result.begin(), result.end(), [](const Rotational_symmetry<GT>& a, const Rotational_symmetry<GT>& b) {
-    return a.symmetry > b.symmetry;
-  });
+  // Strongest first, each meeting the stronger ones at their common point; if the strongest passes
+  // through the centre of mass (a whole shape), that point is the centre of mass.
+  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return stronger(a.symmetry, b.symmetry); });
+  std::vector<Daxis> kept;
+  if(!found.empty() && found.front().axis.distance(center) < same_axis_distance * radius) {
+    const Eigen::Vector3d d = found.front().axis.direction.unitOrthogonal();
+    kept.push_back({center, d}); // two lines through the centre pin it
+    kept.push_back({center, d.cross(found.front().axis.direction)});
+  }
+  std::vector<Found_rotation<GT>> result;
+  for(const Found_rotation<GT>& f : found)
+    if(concurrent(f.axis, kept, same_axis_distance * radius)) {
+      kept.push_back(f.axis);
+      result.push_back(f);
+    }
   return result;
 }
 
-// The axes of the group the found ones generate (group_closure.h), refined and tested, added to
-// `found`, until no new one holds (three rounds at most: enough for the dihedral groups, whose
+// The axes of the group the consistent ones found generate (group_closure.h), refined and tested,
+// added to `found`, until no new one holds (three rounds at most: enough for the dihedral groups, whose
 // second class of 2-fold axes comes from products of the first, and for the cube's). The flips
 // about a continuous axis are left out, as generators and as results: they generate one another
 // without end, and one of them stands for all.
@@ -293,8 +337,8 @@ void close_group(const Rotation_search<GT, M, W>& s, const std::vector<Eigen::Ve
     });
   };
   for(int round = 0; round < 3; ++round) {
-    std::vector<Axis_candidate> discrete;
-    for(const Found_rotation<GT>& f : found)
+    std::vector<Axis_candidate> discrete; // the generators: the consistent axes found
+    for(const Found_rotation<GT>& f : consistent(found, center, radius))
       if(f.symmetry.order >= 2 && !flip_of_continuous(f.axis)) discrete.push_back({f.axis, f.symmetry.order, 0.});
     const std::vector<Axis_candidate> generated = group_closure(
       discrete, s.max_order, center, radius, [&](const Daxis& a, const Daxis& b) { return same_axis(a, b, center, radius); });
@@ -339,7 +383,9 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
   }
   close_group(s, order_probes, found);
   if(s.verbose) std::cerr << "  " << found.size() << " axes (" << seconds() << " s)\n";
-  return merged(std::move(found), center, s.mass.radius());
+  std::vector<Rotational_symmetry<GT>> result;
+  for(const Found_rotation<GT>& f : consistent(std::move(found), center, s.mass.radius())) result.push_back(f.symmetry);
+  return result;
 }
 
 } // namespace internal
