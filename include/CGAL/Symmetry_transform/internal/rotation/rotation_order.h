@@ -42,7 +42,7 @@ struct Rotation_order
   // with j and k coprime (the others are the same rotations, or their inverses).
   std::vector<std::vector<double>> supports;
   std::array<double, 3> continuity_supports{{0., 0., 0.}};
-  double best = 0.;   // the best of these supports
+  double best = 0.;   // the best of the supports of rotations by a quarter turn or more
   int best_order = 2; // the k of the best support at 2 pi / k
 
   double support(int j, int k) const
@@ -75,9 +75,13 @@ double rotation_support(const std::vector<Eigen::Vector3d>& samples, const Daxis
 // The supports of the rotations by 2 pi j / k (k <= max_order) and by the continuity angles,
 // measured at `width` sigma (the final width of the refinement, at most sigma / 2: sharp on
 // exact symmetries), and the order they give: a rotation holds if its support is at least
-// rotation_hold_ratio of the best; continuous if the three continuity angles hold, else the
-// largest k whose rotations 2 pi j / k all hold (a rotation by 2 pi / k that holds while one of
-// its powers does not is not a symmetry: the supports are those of parts that happen to match).
+// rotation_hold_ratio of the best support of the rotations by a quarter turn or more (every
+// k-fold symmetry has one: 2 pi floor(k / 2) / k; the continuity angles are all such): where a part
+// of the shape is missing, small rotations map much of the hole onto itself and keep more
+// support than the half turns, without being any truer. Continuous if the three continuity
+// angles hold, else the largest k whose rotations 2 pi j / k all hold (a rotation by 2 pi / k
+// that holds while one of its powers does not is not a symmetry: the supports are those of parts
+// that happen to match).
 template <typename Matcher>
 Rotation_order rotation_order(const std::vector<Eigen::Vector3d>& samples, const Daxis& axis, int max_order,
                               const Matcher& matcher, const Isp_settings& settings, double width)
@@ -90,7 +94,7 @@ Rotation_order rotation_order(const std::vector<Eigen::Vector3d>& samples, const
       if(std::gcd(j, k) != 1) continue;
       const double s = rotation_support(samples, axis, 2. * CGAL_PI * double(j) / double(k), matcher, settings, width);
       result.supports[std::size_t(k)][std::size_t(j)] = s;
-      result.best = (std::max)(result.best, s);
+      if(4 * j >= k) result.best = (std::max)(result.best, s);
       if(j == 1 && s > result.support(1, result.best_order)) result.best_order = k;
     }
   }
