@@ -5,14 +5,13 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_PRINCIPAL_SYMMETRY_H
 #define CGAL_SYMMETRY_TRANSFORM_PRINCIPAL_SYMMETRY_H
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRef
-A principal symmetry of a shape: a local maximum of its reflective symmetry transform,
-refined to high precision.
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformPrincipalRef
+ * A principal symmetry of a shape: a local maximum of its reflective symmetry transform,
+ * refined to high precision.
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 struct Principal_symmetry
@@ -27,7 +26,6 @@ struct Principal_symmetry
   double support;
 };
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_PRINCIPAL_SYMMETRY_H

@@ -12,8 +12,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 namespace internal {
 
@@ -43,27 +42,27 @@ double symmetry_measure_of_reflection(const Voxel_grid<GT>& f, const Reflection&
 } // namespace internal
 
 /*!
-\ingroup PkgSymmetryTransformMeasureRef
-
-Symmetry measure of a sampled function \f$ f \f$ with respect to the reflection \f$ \gamma \f$
-through `plane`, evaluated directly on the grid:
-\f$ SM(\gamma) = \sum_x f(x)\, f(\gamma(x)) / \sum_x f(x)^2 \f$, the sum running over the
-samples and \f$ f(\gamma(x)) \f$ interpolated with cubic (Catmull-Rom) splines.
-
-For a non-negative \f$ f \f$, such as a Gaussian distance transform, it lies in \f$ [0,1] \f$:
-1 for a perfect symmetry (up to interpolation error, below \f$ 10^{-3} \f$ for a GEDT of
-width 1.5 voxels), lower the less symmetric \f$ f \f$ is. It is the quantity the
-reflective symmetry transform tabulates for all planes; use this function to measure a
-given plane exactly, in \f$ O(n^3) \f$.
-
-\tparam GeomTraits a model of `Kernel`
-
-\param f the function, for instance a GEDT from `gaussian_distance_transform()`
-\param plane the plane of the reflection; its orientation does not matter
-
-\returns \f$ SM(\gamma) \f$
-
-\throws std::invalid_argument if `plane` is degenerate or `f` is zero everywhere.
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * Symmetry measure of a sampled function \f$ f \f$ with respect to the reflection \f$ \gamma \f$
+ * through `plane`, evaluated directly on the grid:
+ * \f$ SM(\gamma) = \sum_x f(x)\, f(\gamma(x)) / \sum_x f(x)^2 \f$, the sum running over the
+ * samples and \f$ f(\gamma(x)) \f$ interpolated with cubic (Catmull-Rom) splines.
+ *
+ * For a non-negative \f$ f \f$, such as a Gaussian distance transform, it lies in \f$ [0,1] \f$:
+ * 1 for a perfect symmetry (up to interpolation error, below \f$ 10^{-3} \f$ for a GEDT of
+ * width 1.5 voxels), lower the less symmetric \f$ f \f$ is. It is the quantity the
+ * reflective symmetry transform tabulates for all planes; use this function to measure a
+ * given plane exactly, in \f$ O(n^3) \f$.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ *
+ * \param f the function, for instance a GEDT from `gaussian_distance_transform()`
+ * \param plane the plane of the reflection; its orientation does not matter
+ *
+ * \returns \f$ SM(\gamma) \f$
+ *
+ * \throws std::invalid_argument if `plane` is degenerate or `f` is zero everywhere.
 */
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Plane_3& plane)
@@ -81,20 +80,20 @@ double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTrai
 }
 
 /*!
-\ingroup PkgSymmetryTransformMeasureRef
-
-Symmetry measure of a sampled function \f$ f \f$ with respect to the point reflection
-\f$ x \mapsto 2p - x \f$ through `center`, evaluated directly on the grid as in
-`symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`.
-
-\tparam GeomTraits a model of `Kernel`
-
-\param f the function
-\param center the centre \f$ p \f$ of the point reflection
-
-\returns \f$ \sum_x f(x)\, f(2p - x) / \sum_x f(x)^2 \f$
-
-\throws std::invalid_argument if `f` is zero everywhere.
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * Symmetry measure of a sampled function \f$ f \f$ with respect to the point reflection
+ * \f$ x \mapsto 2p - x \f$ through `center`, evaluated directly on the grid as in
+ * `symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ *
+ * \param f the function
+ * \param center the centre \f$ p \f$ of the point reflection
+ *
+ * \returns \f$ \sum_x f(x)\, f(2p - x) / \sum_x f(x)^2 \f$
+ *
+ * \throws std::invalid_argument if `f` is zero everywhere.
 */
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Point_3& center)
@@ -106,23 +105,22 @@ double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTrai
 }
 
 /*!
-\ingroup PkgSymmetryTransformMeasureRef
-
-The symmetry transform's value \f$ \sqrt{(1 + SM)/2} \f$ as defined in the thesis
-(Equation 3.1.1), from a symmetry measure \f$ SM \f$. It is a monotone function of
-\f$ SM \f$: thresholds and comparisons in this package use \f$ SM \f$ itself.
-
-\param symmetry_measure a symmetry measure \f$ SM \f$, in \f$ [-1, 1] \f$
-
-\returns \f$ \sqrt{(1 + SM)/2} \f$, in \f$ [0, 1] \f$
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * The symmetry transform's value \f$ \sqrt{(1 + SM)/2} \f$ as defined in the thesis
+ * (Equation 3.1.1), from a symmetry measure \f$ SM \f$. It is a monotone function of
+ * \f$ SM \f$: thresholds and comparisons in this package use \f$ SM \f$ itself.
+ *
+ * \param symmetry_measure a symmetry measure \f$ SM \f$, in \f$ [-1, 1] \f$
+ *
+ * \returns \f$ \sqrt{(1 + SM)/2} \f$, in \f$ [0, 1] \f$
 */
 inline double symmetry_transform_value(double symmetry_measure)
 {
   return std::sqrt((1. + symmetry_measure) / 2.);
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 // Rotations (and any rigid motion): the conversion lives with the rotational symmetries.
 #include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>

@@ -11,16 +11,16 @@
 
 #include <cstddef>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 namespace defaults {
 
 // Grid and transforms (gaussian_distance_transform(), point_symmetry_transform(),
 // reflective_symmetry_transform(), detect_principal_symmetries()).
 constexpr long grid_resolution = 64;          // the thesis's 64^3
 constexpr double gaussian_width = 1.5;        // sigma in voxels (DESIGN.md: 1.5 to 2)
-constexpr double grid_margin = 1.;            // 1: the side that leaves room for the Gaussian tail
+// grid_margin has no constant default: unless it is given, the side of the grid leaves room for
+// the Gaussian tail around the bounding sphere (internal/grid/settings.h); never read.
+constexpr double grid_margin = 1.;
 constexpr std::size_t monte_carlo_pairs = 2000000; // the thesis's 2e6 pairs at 64^3
 constexpr unsigned random_seed = 0;
 
@@ -45,6 +45,10 @@ constexpr std::size_t remeshing_iterations = 20;
 constexpr std::size_t remeshing_relaxations = 5;
 constexpr double position_weight = 0.002;          // the thesis's alpha
 constexpr double subdivision_ratio = 5.;
+// As CGAL's VSA: without a usable max_number_of_proxies, at most a proxy per 3 faces, and the
+// seeding stops when the error drops by less than this fraction.
+constexpr std::size_t faces_per_proxy = 3;
+constexpr double min_error_drop = 0.1;
 constexpr std::size_t metric_samples = 20000;     // remeshing metrics: samples on each surface
 
 // Segmentation: each segment gets its own detection, cheaper than the whole shape's: a coarser
@@ -57,8 +61,6 @@ constexpr std::size_t segmentation_refinement_samples = 5000;
 constexpr std::size_t segmentation_max_number_of_planes = 6;
 
 } // namespace defaults
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_DEFAULTS_H

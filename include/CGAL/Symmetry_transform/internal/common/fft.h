@@ -17,9 +17,7 @@
 #include <mutex>
 #include <new>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 inline std::mutex& fftw_planner_mutex()
 {
@@ -87,8 +85,6 @@ inline int fft_friendly_size(int n)
   }
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_FFT_H

@@ -19,9 +19,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 typedef CGAL::Simple_cartesian<double> Dkernel;
 typedef Dkernel::Point_3 Dpoint;
@@ -90,8 +88,6 @@ typename GT::Vector_3 to_vector(const Eigen::Vector3d& v)
   return CGAL::Cartesian_converter<Dkernel, GT>()(Dvector(v.x(), v.y(), v.z()));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_GEOMETRY_H

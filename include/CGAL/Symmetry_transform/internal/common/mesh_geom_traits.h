@@ -8,9 +8,7 @@
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The traits of a mesh, as GetGeomTraits, but with no `type` for a Voxel_grid: the transforms
 // are overloaded on meshes and grids, and this keeps the mesh overloads out of the way of
@@ -25,8 +23,6 @@ template <typename GT, typename NamedParameters>
 struct Mesh_geom_traits<Voxel_grid<GT>, NamedParameters>
 {};
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_MESH_GEOM_TRAITS_H

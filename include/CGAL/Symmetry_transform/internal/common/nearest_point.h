@@ -21,9 +21,7 @@
 #include <memory>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Queries are thread-safe once constructed. The tree holds indices into its own copy of the points.
 class Nearest_point
@@ -74,8 +72,6 @@ private:
   std::unique_ptr<Search::Tree> tree_;
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_NEAREST_POINT_H

@@ -11,9 +11,7 @@
 #include <thread>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 inline unsigned default_number_of_threads()
 {
@@ -46,8 +44,6 @@ void parallel_for(std::size_t count, unsigned threads, const Body& body)
     if(e) std::rethrow_exception(e);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H

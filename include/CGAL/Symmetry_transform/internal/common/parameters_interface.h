@@ -28,4 +28,9 @@ CGAL_add_named_parameter(st_max_number_of_segments_t, st_max_number_of_segments,
 CGAL_add_named_parameter(st_smoothing_lambda_t, st_smoothing_lambda, smoothing_lambda)
 CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentation_tree)
 // end of segmentation
+
+// Viewpoint selection (viewpoint_selection.h)
+CGAL_add_named_parameter(st_number_of_directions_t, st_number_of_directions, number_of_directions)
+
+// Rotational symmetries (rotational_symmetries.h)
 CGAL_add_named_parameter(st_max_order_t, st_max_order, max_order)

@@ -21,9 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Centre of mass and radius: the frame every grid and every plane offset is expressed in.
 struct Shape_frame
@@ -112,8 +110,6 @@ inline Shape_frame frame_of_points(const std::vector<Dpoint>& points)
   return {center, std::sqrt(r2)};
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_SHAPE_INPUT_H

@@ -18,9 +18,7 @@
 
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The point of triangle abc closest to p, by the Voronoi region of the triangle that p projects
 // into (vertex, edge or face): a few dot products, no plane constructed, hence about four
@@ -73,8 +71,6 @@ public:
 
 typedef CGAL::AABB_tree<Triangle_tree_traits> Triangle_tree;
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_TRIANGLE_TREE_H

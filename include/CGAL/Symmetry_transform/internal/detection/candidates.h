@@ -6,10 +6,10 @@
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_CANDIDATES_H
 
 // Candidates of principal symmetries among the local maxima of a discrete PRST (thesis,
-// section 3.3; thresholds of DESIGN.md), their refinement, and the merging of duplicates.
+// section 3.3; thresholds of DESIGN.md), and the tests that tell two planes apart.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
@@ -17,9 +17,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Negative discrete Laplacian at a bin (6 neighbours, through the wraps): the depth of a maximum.
 inline double maximum_depth(const Plane_bins& bins, const std::vector<double>& values, const std::array<std::size_t, 3>& b)
@@ -107,8 +105,6 @@ bool stays_near_bin(const Reflective_symmetry_transform<GT>& prst, const Dplane&
   return same_plane(to_dplane(prst.plane(b)), plane, reach * bin_angle, reach * bins.offset_step(), center_of(bins));
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_CANDIDATES_H

@@ -14,171 +14,72 @@
 // minimises the distance to the match itself (closed form). On a mesh, ISP walks with the
 // approximate matches of a Closest_triangle_field and ends with exact searches in the AABB tree.
 
-#include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
+#include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
-#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
-#include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
-
+#include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
+#include <CGAL/Symmetry_transform/internal/detection/matchers.h>
 
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <array>
-#include <cstdint>
-#include <limits>
+#include <cmath>
 #include <functional>
 #include <type_traits>
-#include <stdexcept>
-#include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
-// Closest points on a triangle soup, with the normal of the triangle they lie on.
-class Triangle_matcher
-{
-  typedef Triangle_tree Tree;
-
-public:
-  static constexpr bool has_normals = true;
-
-  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles)
-    : triangles_(triangles), tree_(triangles.begin(), triangles.end())
-  {
-    tree_.build();
-    tree_.accelerate_distance_queries();
-    tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
-  }
-
-  // A previous match, on the surface and with its triangle: the search for a nearby query
-  // starts from it.
-  typedef typename Tree::Point_and_primitive_id Hint;
-
-  // Closest point to p and the unit normal there; `hint` is used if `use_hint`, and updated.
-  std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint& hint, bool use_hint) const
-  {
-    const Dpoint query(p.x(), p.y(), p.z());
-    hint = use_hint ? tree_.closest_point_and_primitive(query, hint) : tree_.closest_point_and_primitive(query);
-    const auto& match = hint;
-    const Dtriangle& t = *match.second;
-    Eigen::Vector3d normal = to_eigen(CGAL::ORIGIN + CGAL::cross_product(t[1] - t[0], t[2] - t[0]));
-    return {to_eigen(match.first), normal.normalized()};
-  }
-
-private:
-  const std::vector<Dtriangle>& triangles_;
-  Tree tree_;
-};
-
-// Approximate closest points on a triangle soup, about ten times cheaper than the exact search:
-// the nearest of the triangles closest to the eight voxel centres around the query, read from
-// a grid filled with the Gaussian distance transform. Within the band of the transform the
-// distance is close to the true one (on a smooth surface the true closest triangle is a
-// neighbour of these) and the normal that of the surface there; outside, the exact matcher
-// answers. ISP walks with it and ends with exact searches.
-class Closest_triangle_field
-{
-public:
-  static constexpr bool has_normals = true;
-  // The match found, a hint for the exact search of the same point.
-  typedef Triangle_matcher::Hint Hint;
-
-  // `closest_triangles`: per voxel (index (k n + j) n + i) the triangle closest to its centre,
-  // or -1; `origin`: the corner of the grid, `voxel_size` and `resolution` its geometry.
-  Closest_triangle_field(const std::vector<Dtriangle>& triangles, const Triangle_matcher& exact,
-                         std::vector<std::int32_t> closest_triangles, const std::array<double, 3>& origin,
-                         double voxel_size, std::size_t resolution)
-    : triangles_(triangles), exact_(exact), closest_triangles_(std::move(closest_triangles)), origin_(origin),
-      voxel_size_(voxel_size), resolution_(long(resolution))
-  {
-    corners_.reserve(triangles.size());
-    normals_.reserve(triangles.size());
-    for(const Dtriangle& t : triangles) {
-      corners_.push_back({to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2])});
-      normals_.push_back(to_eigen(CGAL::ORIGIN + CGAL::cross_product(t[1] - t[0], t[2] - t[0])).normalized());
-    }
-  }
-
-  std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint& hint, bool) const
-  {
-    const auto [on_triangle, t] = nearest_in_cell(p);
-    if(t < 0) return exact_.closest(p, hint, false);
-    hint = {Dpoint(on_triangle.x(), on_triangle.y(), on_triangle.z()), triangles_.begin() + t};
-    return {on_triangle, normals_[std::size_t(t)]};
-  }
-
-  // The point nearest to p on the closest triangles of the 8 voxels around p, and its triangle;
-  // triangle -1 if none of these voxels lies in the band.
-  std::pair<Eigen::Vector3d, std::int32_t> nearest_in_cell(const Eigen::Vector3d& p) const
-  {
-    // The cell of voxel centres around p.
-    std::array<long, 3> corner;
-    for(int a = 0; a < 3; ++a)
-      corner[a] = (std::min)((std::max)(long(std::floor((p[a] - origin_[a]) / voxel_size_ - 0.5)), 0L), resolution_ - 2);
-    std::array<std::int32_t, 8> seen;
-    std::size_t count = 0;
-    double best = std::numeric_limits<double>::infinity();
-    std::pair<Eigen::Vector3d, std::int32_t> nearest(Eigen::Vector3d::Zero(), -1);
-    for(long c = 0; c < 8; ++c) {
-      const std::int32_t t = closest_triangles_[std::size_t(((corner[2] + (c >> 2)) * resolution_ + corner[1] + ((c >> 1) & 1)) * resolution_ +
-                                                            corner[0] + (c & 1))];
-      if(t < 0 || std::find(seen.begin(), seen.begin() + count, t) != seen.begin() + count) continue;
-      seen[count++] = t;
-      const std::array<Eigen::Vector3d, 3>& v = corners_[std::size_t(t)];
-      const Eigen::Vector3d on_triangle = closest_point_on_triangle(p, v[0], v[1], v[2]);
-      const double d2 = (p - on_triangle).squaredNorm();
-      if(d2 < best) {
-        best = d2;
-        nearest = {on_triangle, t};
-      }
-    }
-    return nearest;
-  }
-
-private:
-  const std::vector<Dtriangle>& triangles_;
-  const Triangle_matcher& exact_;
-  std::vector<std::array<Eigen::Vector3d, 3>> corners_;
-  std::vector<Eigen::Vector3d> normals_;
-  std::vector<std::int32_t> closest_triangles_;
-  std::array<double, 3> origin_;
-  double voxel_size_;
-  long resolution_;
-};
-
-// Closest points of a point set (no normals).
-class Point_matcher
-{
-public:
-  static constexpr bool has_normals = false;
-
-  explicit Point_matcher(const std::vector<Dpoint>& points) : nearest_(points) {}
-
-  struct Hint {};
-
-  std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint&, bool) const
-  {
-    return {to_eigen(nearest_.point(nearest_(p).index)), Eigen::Vector3d::Zero()};
-  }
-
-private:
-  Nearest_point nearest_;
-};
+// The coarse phase uses every coarse_sample_stride-th sample (the first ones, see isp_order());
+// fewer than this many cannot locate a plane, and the coarse phase is skipped.
+constexpr std::size_t min_coarse_samples = 100;
+// A coarse step shorter than this (|change of the unit normal| + |change of offset| / R) is
+// within about a bin (2e-2) of the limit: the coarse phase has settled.
+constexpr double coarse_settled_step = 5e-3;
+// A start that has not settled after this many coarse iterations is not near a maximum.
+constexpr unsigned coarse_max_iterations = 12;
+// Over-relaxed steps are doubled after each gain, up to this factor.
+constexpr double max_step_factor = 32.;
+// A plain step after an overshoot that raises the mean weight by less than this (relative) has
+// reached the top: of a plateau, or, on an exact symmetry, within a few hundredths of a degree
+// after the quadratic convergence of Gauss-Newton.
+constexpr double min_relative_gain = 1e-3;
+// The weights narrow (to half, then a quarter of sigma) while the mean weight at half the width
+// is above this fraction of the mean weight: the matches are then much closer than sigma, an
+// exact symmetry.
+constexpr double exact_symmetry_weight_ratio = 0.85;
+constexpr double narrower_widths[] = {0.5, 0.25};
+// The exact steps that end a walk at narrowed weights (an exact symmetry: Gauss-Newton converges
+// in a few), and the step below which it has converged.
+constexpr unsigned exact_polish_steps = 4;
+constexpr double polish_converged_step = 1e-7;
+// Weights below this add nothing to the fit (exp(-27.6): farther than 7.4 widths).
+constexpr double negligible_weight = 1e-12;
+// Samples per chunk of work: each thread takes every threads-th chunk.
+constexpr std::size_t samples_per_chunk = 64;
 
 struct Isp_settings
 {
   double sigma = 0.;            // width of the Gaussian weights of the support; the phases
                                 // of ISP weigh with multiples of it
   double radius = 0.;           // size of the shape, for the convergence test
-  unsigned max_iterations = 20; // at most this many re-fits
+  unsigned max_iterations = defaults::isp_iterations; // at most this many re-fits per stage
   unsigned threads = 1;
   // Whether a point is farther than 3 sigma from the shape (the GEDT is zero there): its
   // weight is zero at the widths ISP uses (sigma and narrower), and the closest-point search, the
-  // costliest step, is skipped.
+  // costliest step, is skipped. Made by beyond_band_of(), it refers to a GEDT that must outlive it.
   std::function<bool(const Eigen::Vector3d&)> beyond_band;
 };
+
+// The band test of a GEDT, which it refers to (hence no temporary).
+template <typename GT>
+std::function<bool(const Eigen::Vector3d&)> beyond_band_of(const Voxel_grid<GT>& gedt)
+{
+  return [&gedt](const Eigen::Vector3d& p) { return gedt.trilinear_value(p.x(), p.y(), p.z()) == 0.; };
+}
+template <typename GT>
+std::function<bool(const Eigen::Vector3d&)> beyond_band_of(const Voxel_grid<GT>&& gedt) = delete;
 
 struct Isp_result
 {
@@ -199,6 +100,35 @@ struct Isp_sums
   double support = 0.;         // weights at sigma itself
   double narrower_weight = 0.; // weights at half the width, w^4, of the same matches
 
+  // Adds sample p, reflected to `image` through `plane` (tangent basis t1, t2 of its normal) and
+  // matched to `match`: to the support with weights of width `sigma`, to the fit with `fit_sigma`.
+  template <bool has_normals>
+  void add(const Eigen::Vector3d& p, const Eigen::Vector3d& image, const Match& match, const Dplane& plane,
+           const Eigen::Vector3d& t1, const Eigen::Vector3d& t2, double sigma, double fit_sigma)
+  {
+    const double d2 = (image - match.first).squaredNorm();
+    support += std::exp(-d2 / (2. * sigma * sigma));
+    const double w = std::exp(-d2 / (2. * fit_sigma * fit_sigma));
+    if(w < negligible_weight) return;
+    weight += w;
+    narrower_weight += (w * w) * (w * w);
+    const Eigen::Vector3d& n = plane.normal;
+    if constexpr(has_normals) {
+      const Eigen::Vector3d& nu = match.second;
+      const double height = n.dot(p) - plane.offset;
+      // d(image)/d(normal) . delta = -2 ((delta . p) n + height delta); d(image)/d(offset) = 2 n
+      const Eigen::Vector3d jacobian(-2. * (t1.dot(p) * nu.dot(n) + height * nu.dot(t1)),
+                                     -2. * (t2.dot(p) * nu.dot(n) + height * nu.dot(t2)), 2. * nu.dot(n));
+      const double residual = nu.dot(image - match.first);
+      jtj += w * jacobian * jacobian.transpose();
+      jtr += w * residual * jacobian;
+    } else {
+      const Eigen::Vector3d m = 0.5 * (p + match.first), u = p - match.first;
+      moments += w * (4. * m * m.transpose() - u * u.transpose());
+      midpoint_sum += w * m;
+    }
+  }
+
   void add(const Isp_sums& o)
   {
     support += o.support;
@@ -211,69 +141,35 @@ struct Isp_sums
   }
 };
 
-// Matches kept from one iteration to the next: the searches for nearby queries start there.
-template <typename Hint>
-struct Match_hints
-{
-  explicit Match_hints(std::size_t n) : hints(n), has_hint(n, 0) {}
-  std::vector<Hint> hints;
-  std::vector<char> has_hint;
-};
-
-// The sums of the fit with weights of width `width` sigma.
+// The sums of the fit with weights of width `width` sigma. `hints` (one per sample) keep the
+// matches from one iteration to the next: the searches for nearby queries start there.
 template <typename Matcher>
 Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane, const Matcher& matcher,
-                  const Isp_settings& settings, double width, Match_hints<typename Matcher::Hint>& match_hints)
+                  const Isp_settings& settings, double width, std::vector<typename Matcher::Hint>& hints)
 {
-  std::vector<typename Matcher::Hint>& hints = match_hints.hints;
-  std::vector<char>& has_hint = match_hints.has_hint;
-  const double sigma = width * settings.sigma;
   // Tangent basis of the normal: the Gauss-Newton unknowns are (rotation along t1, t2, offset).
-  const Eigen::Vector3d& n = plane.normal;
-  const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+  const Eigen::Vector3d t1 = plane.normal.unitOrthogonal(), t2 = plane.normal.cross(t1);
   // Adds sample i to the sums s; `previous` is the last sample of the same thread with a match.
   const std::size_t none = samples.size();
   auto add_sample = [&](std::size_t i, Isp_sums& s, std::size_t& previous) {
-    const Eigen::Vector3d& p = samples[i];
-    const Eigen::Vector3d image = plane.reflect(p);
+    const Eigen::Vector3d image = plane.reflect(samples[i]);
     if(settings.beyond_band && settings.beyond_band(image)) return;
     // No match of its own yet: that of the previous sample, close by, is a good start.
-    if(!has_hint[i] && previous != none) hints[i] = hints[previous];
-    const auto match = matcher.closest(image, hints[i], has_hint[i] != 0 || previous != none);
-    has_hint[i] = 1;
+    if(!hints[i].valid && previous != none) hints[i] = hints[previous];
+    const Match match = matcher.closest(image, hints[i]);
     previous = i;
-    const double d2 = (image - match.first).squaredNorm();
-    s.support += std::exp(-d2 / (2. * settings.sigma * settings.sigma));
-    const double w = std::exp(-d2 / (2. * sigma * sigma));
-    if(w < 1e-12) return;
-    s.weight += w;
-    s.narrower_weight += (w * w) * (w * w);
-    if(Matcher::has_normals) {
-      const Eigen::Vector3d& nu = match.second;
-      const double height = n.dot(p) - plane.offset;
-      // d(image)/d(normal) . delta = -2 ((delta . p) n + height delta); d(image)/d(offset) = 2 n
-      const Eigen::Vector3d jacobian(-2. * (t1.dot(p) * nu.dot(n) + height * nu.dot(t1)),
-                                     -2. * (t2.dot(p) * nu.dot(n) + height * nu.dot(t2)), 2. * nu.dot(n));
-      const double residual = nu.dot(image - match.first);
-      s.jtj += w * jacobian * jacobian.transpose();
-      s.jtr += w * residual * jacobian;
-    } else {
-      const Eigen::Vector3d m = 0.5 * (p + match.first), u = p - match.first;
-      s.moments += w * (4. * m * m.transpose() - u * u.transpose());
-      s.midpoint_sum += w * m;
-    }
+    s.add<Matcher::has_normals>(samples[i], image, match, plane, t1, t2, settings.sigma, width * settings.sigma);
   };
   // The samples follow a Hilbert curve: contiguous slices would be regions of the shape, some
   // mapped far from the surface (costly searches) and some onto it. Each thread takes every
   // threads-th chunk instead, a fixed share, so that sums are reproducible.
-  constexpr std::size_t chunk = 64;
-  const std::size_t chunks = (samples.size() + chunk - 1) / chunk;
+  const std::size_t chunks = (samples.size() + samples_per_chunk - 1) / samples_per_chunk;
   const unsigned threads = unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), chunks)));
   std::vector<Isp_sums> partial(threads);
   parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
     std::size_t previous = none;
     for(std::size_t c = thread; c < chunks; c += threads) {
-      for(std::size_t i = c * chunk; i < (std::min)((c + 1) * chunk, samples.size()); ++i)
+      for(std::size_t i = c * samples_per_chunk; i < (std::min)((c + 1) * samples_per_chunk, samples.size()); ++i)
         add_sample(i, partial[thread], previous);
     }
   });
@@ -310,55 +206,52 @@ bool refit(const Isp_sums& s, Dplane& plane, double step_factor = 1.)
   return true;
 }
 
-// ISP from `plane`, in two phases.
-//
-// The coarse phase uses an eighth of the samples, until the plane moves by less than 5e-3
-// (within about a bin, 2e-2, of its limit); a start that has not settled after 12 iterations is
-// not near a maximum. Its weights are those of the fine phase: wider ones would widen the reach
-// of ISP, but let a big part of a composite shape pull the plane of a small one away from it,
-// and the starts (bins of the transform, rough planes) are within a few sigma of their limit.
-//
-// The fine phase uses all samples, and stops when the mean weight stops growing: on a perfect
-// symmetry it tends to 1; on an approximate one it reaches a plateau. There, plain ISP creeps
-// along the flat ridge of the symmetry measure by steps of a fraction of a degree, all in the
-// same direction (bull.off: about 0.1 degree per step, over several degrees). The steps are
-// therefore over-relaxed (as for EM and ICP): doubled, up to 32 times, after each step that
-// raised the mean weight; a step that did not is not taken, and the next one is half the last
-// that did. The mean weight never decreases. Then, on an exact symmetry, the weights narrow (see
-// iterative_symmetric_points()).
-//
+// The phases ISP runs from a plane (the manual, section Principal Symmetries, tells why):
+// - coarse: on the first samples (every coarse_sample_stride-th of the shape), until a step
+//   is shorter than coarse_settled_step, at most coarse_max_iterations; its weights are those of
+//   the fine phase, as wider ones would let a big part of a composite shape pull the plane of a
+//   small one away from it;
+// - fine: on all samples, over-relaxed (steps doubled after each gain, up to max_step_factor; a
+//   step that does not raise the mean weight is not taken and the next one is half the last
+//   that did), until the mean weight stops growing; then, on an exact symmetry, with narrower
+//   weights. The mean weight never decreases.
 // `abandon` may stop either phase early (no convergence).
 enum class Isp_phase { COARSE, FINE, BOTH };
 
 namespace isp {
 
+// Distance between two planes, for the convergence tests: |change of unit normal| + |change of
+// offset| / R.
+inline double step_length(const Dplane& a, const Dplane& b, double radius)
+{
+  return (a.normal - b.normal).norm() + std::abs(a.offset - b.offset) / radius;
+}
+
 template <typename Matcher>
 Isp_result coarse_phase(const std::vector<Eigen::Vector3d>& samples, Dplane plane, const Matcher& matcher,
-                        const Isp_settings& settings, Match_hints<typename Matcher::Hint>& hints,
+                        const Isp_settings& settings, std::vector<typename Matcher::Hint>& hints,
                         const std::function<bool(const Dplane&)>& abandon)
 {
-  constexpr unsigned max_iterations = 12;
-  for(unsigned iteration = 0; iteration < max_iterations; ++iteration) {
+  for(unsigned iteration = 0; iteration < coarse_max_iterations; ++iteration) {
     const Isp_sums s = isp_sums(samples, plane, matcher, settings, 1., hints);
     const Dplane previous = plane;
     if(!refit<Matcher>(s, plane)) return {plane, 0., false, iteration + 1};
-    const double step = (plane.normal - previous.normal).norm() + std::abs(plane.offset - previous.offset) / settings.radius;
-    if(step < 5e-3) return {plane, s.support / double(samples.size()), true, iteration + 1};
+    if(step_length(plane, previous, settings.radius) < coarse_settled_step)
+      return {plane, s.support / double(samples.size()), true, iteration + 1};
     if(abandon && abandon(plane)) return {plane, 0., false, iteration + 1};
   }
-  return {plane, 0., false, max_iterations};
+  return {plane, 0., false, coarse_max_iterations};
 }
 
 // Over-relaxed ISP with weights of width `width` sigma, from result.plane whose sums are
-// `start`, until a plain step after an overshoot gains less than `min_gain` (relative) in mean
-// weight, or a plain step gains nothing, or `max_iterations`; `result` receives the best plane,
-// its support (at sigma) and the iterations. Returns the sums of the best plane.
+// `start`, until a plain step after an overshoot gains less than min_relative_gain in mean
+// weight, or a plain step gains nothing, or settings.max_iterations; `result` receives the best
+// plane, its support (at sigma) and the iterations. Returns the sums of the best plane.
 template <typename Matcher>
-Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher,
-                        const Isp_settings& settings, double width, const Isp_sums& start, Match_hints<typename Matcher::Hint>& hints,
-                        const std::function<bool(const Dplane&)>& abandon, double min_gain, Isp_result& result)
+Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher, const Isp_settings& settings,
+                        double width, const Isp_sums& start, std::vector<typename Matcher::Hint>& hints,
+                        const std::function<bool(const Dplane&)>& abandon, Isp_result& result)
 {
-  constexpr double max_step_factor = 32.;
   const double n = double(samples.size());
   Isp_sums best = start;
   result.support = best.support / n;
@@ -375,7 +268,7 @@ Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Match
     const Isp_sums s = isp_sums(samples, trial, matcher, settings, width, hints);
     ++result.iterations;
     if(s.weight > best.weight) {
-      result.converged = overshot && step_factor == 1. && s.weight < best.weight * (1. + min_gain);
+      result.converged = overshot && step_factor == 1. && s.weight < best.weight * (1. + min_relative_gain);
       result.plane = trial;
       result.support = s.support / n;
       best = s;
@@ -392,11 +285,12 @@ Isp_sums relaxed_ascent(const std::vector<Eigen::Vector3d>& samples, const Match
 }
 
 // Plain ISP steps from result.plane, whose sums are `start`, while they raise the mean weight:
-// at most `max_steps`, and none after a step below 1e-7 (a converged exact symmetry). It ends a
-// walk made with approximate matches.
+// at most `max_steps`, and none after a step below polish_converged_step (a converged exact
+// symmetry). It ends a walk made with approximate matches.
 template <typename Matcher>
 Isp_sums polish(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher, const Isp_settings& settings,
-                double width, const Isp_sums& start, Match_hints<typename Matcher::Hint>& hints, unsigned max_steps, Isp_result& result)
+                double width, const Isp_sums& start, std::vector<typename Matcher::Hint>& hints, unsigned max_steps,
+                Isp_result& result)
 {
   Isp_sums best = start;
   result.support = best.support / double(samples.size());
@@ -406,18 +300,40 @@ Isp_sums polish(const std::vector<Eigen::Vector3d>& samples, const Matcher& matc
     const Isp_sums s = isp_sums(samples, trial, matcher, settings, width, hints);
     ++result.iterations;
     if(!(s.weight > best.weight)) break;
-    const double moved = (trial.normal - result.plane.normal).norm() + std::abs(trial.offset - result.plane.offset) / settings.radius;
+    const double moved = step_length(trial, result.plane, settings.radius);
     result.plane = trial;
     result.support = s.support / double(samples.size());
     best = s;
-    if(moved < 1e-7) break;
+    if(moved < polish_converged_step) break;
   }
   return best;
 }
 
+// The fine phase with `matcher` from `start`; returns the width of its last weights. Narrower
+// weights sharpen an exact symmetry, whose matches are much closer than sigma: parts of the
+// shape that it does not map, matched a fraction of sigma away, lose their say (a local symmetry
+// beside another part). On an approximate symmetry, whose mean weight would drop, they would fit
+// the plane to the few samples that match best: the plane stays.
+template <typename Matcher>
+double climb(const std::vector<Eigen::Vector3d>& samples, const Dplane& start, const Matcher& matcher,
+             const Isp_settings& settings, std::vector<typename Matcher::Hint>& hints,
+             const std::function<bool(const Dplane&)>& abandon, Isp_result& fine)
+{
+  Isp_sums last = relaxed_ascent(samples, matcher, settings, 1., isp_sums(samples, start, matcher, settings, 1., hints),
+                                 hints, abandon, fine);
+  double width = 1.;
+  for(const double narrower : narrower_widths) {
+    if(last.narrower_weight < exact_symmetry_weight_ratio * last.weight || (abandon && abandon(fine.plane))) break;
+    width = narrower;
+    last = relaxed_ascent(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints),
+                          hints, abandon, fine);
+  }
+  return width;
+}
+
 } // namespace isp
 
-// ISP from `plane`: the coarse phase, then the fine phase (see above). With a `walk_matcher`
+// ISP from `plane`: the coarse phase, then the fine phase (see Isp_phase). With a `walk_matcher`
 // (approximate and cheaper matches), both phases walk with it, and a few plain steps with the
 // exact `matcher` end the fine phase (`Isp_phase::COARSE` then uses only the walk matcher).
 template <typename Matcher, typename Walk_matcher = Matcher>
@@ -431,61 +347,38 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   // When the walk's matches are hints of the exact search (Closest_triangle_field), the exact
   // searches that end the walk start from them: most are then one test of a leaf.
   constexpr bool shared_hints = std::is_same<typename Matcher::Hint, typename Walk_matcher::Hint>::value;
-  Match_hints<typename Matcher::Hint> hints(samples.size());
-  Match_hints<typename Walk_matcher::Hint> own_walk_hints(shared_hints || !walks ? 0 : samples.size());
+  std::vector<typename Matcher::Hint> hints(samples.size());
+  std::vector<typename Walk_matcher::Hint> own_walk_hints(shared_hints || !walks ? 0 : samples.size());
   auto& walk_hints = [&]() -> auto& {
     if constexpr(shared_hints) return hints;
     else return own_walk_hints;
   }();
-  std::vector<Eigen::Vector3d> coarse_samples(samples.begin(), samples.begin() + std::ptrdiff_t(samples.size() / 8));
-  if(coarse_samples.size() < 100) coarse_samples.clear(); // too few to locate anything
-  Dplane start = plane;
-  unsigned coarse_iterations = 0;
+  std::vector<Eigen::Vector3d> coarse_samples(samples.begin(),
+                                              samples.begin() + std::ptrdiff_t(samples.size() / coarse_sample_stride));
+  if(coarse_samples.size() < min_coarse_samples) coarse_samples.clear();
+  Isp_result fine{plane, 0., false, 0};
   if(phases != Isp_phase::FINE && !coarse_samples.empty()) {
     const Isp_result coarse = walks ? isp::coarse_phase(coarse_samples, plane, *walk_matcher, settings, walk_hints, abandon)
                                     : isp::coarse_phase(coarse_samples, plane, matcher, settings, hints, abandon);
     if(phases == Isp_phase::COARSE) return coarse;
     // Not settled: the fine phase goes on from there all the same (a user's rough plane).
-    start = coarse.plane;
-    coarse_iterations = coarse.iterations;
+    fine.plane = coarse.plane;
+    fine.iterations = coarse.iterations;
   }
-  // A gain below 1e-3 after an overshoot: the top of a plateau, or, on a perfect symmetry, a
-  // plane within a few hundredths of a degree after the quadratic convergence of Gauss-Newton.
-  constexpr double min_gain = 1e-3;
-  Isp_result fine{start, 0., false, coarse_iterations};
-  // The fine phase with matcher m; returns the width of its last weights. Narrower weights
-  // sharpen an exact symmetry, whose matches are much closer than sigma: parts of the shape that
-  // it does not map, matched a fraction of sigma away, lose their say (a local symmetry beside
-  // another part). On an approximate symmetry, whose mean weight would drop, they would fit the
-  // plane to the few samples that match best: the plane stays.
-  auto climb = [&](const auto& m, auto& m_hints) {
-    Isp_sums last = isp::relaxed_ascent(samples, m, settings, 1., isp_sums(samples, start, m, settings, 1., m_hints), m_hints,
-                                        abandon, min_gain, fine);
-    double width = 1.;
-    for(const double narrower : {0.5, 0.25}) {
-      if(last.narrower_weight < 0.85 * last.weight || (abandon && abandon(fine.plane))) break;
-      width = narrower;
-      last = isp::relaxed_ascent(samples, m, settings, width, isp_sums(samples, fine.plane, m, settings, width, m_hints),
-                                 m_hints, abandon, min_gain, fine);
-    }
-    return width;
-  };
   if(!walks) {
-    climb(matcher, hints);
+    isp::climb(samples, fine.plane, matcher, settings, hints, abandon, fine);
     return fine;
   }
-  const double width = climb(*walk_matcher, walk_hints);
+  const double width = isp::climb(samples, fine.plane, *walk_matcher, settings, walk_hints, abandon, fine);
   if(abandon && abandon(fine.plane)) return fine;
   // The walk ends with exact matches: on an exact symmetry, a few Gauss-Newton steps from the top
   // of the walk reach the exact optimum; on an approximate one, whose ridge is flat (steps would
   // creep along it), the top of the walk stays, and its support is measured exactly.
   isp::polish(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints), hints,
-              width < 1. ? 4 : 0, fine);
+              width < 1. ? exact_polish_steps : 0, fine);
   return fine;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_ITERATIVE_SYMMETRIC_POINTS_H

@@ -14,13 +14,12 @@
 
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 template <typename GT>
 Voxel_grid<GT> empty_grid(const Shape_frame& frame, const Grid_settings& settings)
@@ -36,28 +35,39 @@ inline std::pair<long, long> voxel_range(double lo, double hi, double origin, do
   return {first, last};
 }
 
+// Calls visit(index of the voxel, x, y, z of its centre) for each voxel whose centre lies in the
+// box [lo, hi].
+template <typename GT, typename Visit>
+void for_each_voxel_in_box(const Voxel_grid<GT>& grid, const std::array<double, 3>& lo,
+                           const std::array<double, 3>& hi, const Visit& visit)
+{
+  const double h = grid.voxel_size();
+  const long n = long(grid.resolution());
+  const auto& o = grid.origin();
+  std::array<std::pair<long, long>, 3> range;
+  for(int a = 0; a < 3; ++a) range[a] = voxel_range(lo[a], hi[a], o[a], h, n);
+  for(long k = range[2].first; k <= range[2].second; ++k)
+    for(long j = range[1].first; j <= range[1].second; ++j)
+      for(long i = range[0].first; i <= range[0].second; ++i)
+        visit(grid.index(std::size_t(i), std::size_t(j), std::size_t(k)), o[0] + (double(i) + 0.5) * h,
+              o[1] + (double(j) + 0.5) * h, o[2] + (double(k) + 0.5) * h);
+}
+
 // Marks the voxels whose centre lies within `cutoff` of the plane of a triangle and inside
 // its bounding box grown by `cutoff`: a superset of the band where the GEDT is non-zero.
 template <typename GT>
 void mark_band_of_triangle(const Voxel_grid<GT>& grid, const Dtriangle& t, double cutoff,
                            std::vector<char>& in_band)
 {
-  const double h = grid.voxel_size();
-  const long n = long(grid.resolution());
-  const auto& o = grid.origin();
   const Bbox_3 box = t.bbox();
-  const auto ri = voxel_range(box.xmin() - cutoff, box.xmax() + cutoff, o[0], h, n);
-  const auto rj = voxel_range(box.ymin() - cutoff, box.ymax() + cutoff, o[1], h, n);
-  const auto rk = voxel_range(box.zmin() - cutoff, box.zmax() + cutoff, o[2], h, n);
   Dvector normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
   normal = normal / std::sqrt(normal.squared_length());
-  for(long k = rk.first; k <= rk.second; ++k)
-    for(long j = rj.first; j <= rj.second; ++j)
-      for(long i = ri.first; i <= ri.second; ++i) {
-        const Dvector d(o[0] + (double(i) + 0.5) * h - t[0].x(), o[1] + (double(j) + 0.5) * h - t[0].y(),
-                        o[2] + (double(k) + 0.5) * h - t[0].z());
-        if(std::abs(d * normal) <= cutoff) in_band[grid.index(std::size_t(i), std::size_t(j), std::size_t(k))] = 1;
-      }
+  for_each_voxel_in_box(grid, {box.xmin() - cutoff, box.ymin() - cutoff, box.zmin() - cutoff},
+                        {box.xmax() + cutoff, box.ymax() + cutoff, box.zmax() + cutoff},
+                        [&](std::size_t v, double x, double y, double z) {
+                          const Dvector d(x - t[0].x(), y - t[0].y(), z - t[0].z());
+                          if(std::abs(d * normal) <= cutoff) in_band[v] = 1;
+                        });
 }
 
 // Marks the voxels within `cutoff` of a point.
@@ -65,20 +75,12 @@ template <typename GT>
 void mark_band_of_point(const Voxel_grid<GT>& grid, const Dpoint& p, double cutoff,
                         std::vector<char>& in_band)
 {
-  const double h = grid.voxel_size();
-  const long n = long(grid.resolution());
-  const auto& o = grid.origin();
-  const auto ri = voxel_range(p.x() - cutoff, p.x() + cutoff, o[0], h, n);
-  const auto rj = voxel_range(p.y() - cutoff, p.y() + cutoff, o[1], h, n);
-  const auto rk = voxel_range(p.z() - cutoff, p.z() + cutoff, o[2], h, n);
-  for(long k = rk.first; k <= rk.second; ++k)
-    for(long j = rj.first; j <= rj.second; ++j)
-      for(long i = ri.first; i <= ri.second; ++i) {
-        const double dx = o[0] + (double(i) + 0.5) * h - p.x(), dy = o[1] + (double(j) + 0.5) * h - p.y(),
-                     dz = o[2] + (double(k) + 0.5) * h - p.z();
-        if(dx * dx + dy * dy + dz * dz <= cutoff * cutoff)
-          in_band[grid.index(std::size_t(i), std::size_t(j), std::size_t(k))] = 1;
-      }
+  for_each_voxel_in_box(grid, {p.x() - cutoff, p.y() - cutoff, p.z() - cutoff},
+                        {p.x() + cutoff, p.y() + cutoff, p.z() + cutoff},
+                        [&](std::size_t v, double x, double y, double z) {
+                          const double dx = x - p.x(), dy = y - p.y(), dz = z - p.z();
+                          if(dx * dx + dy * dy + dz * dz <= cutoff * cutoff) in_band[v] = 1;
+                        });
 }
 
 // Sets each voxel v of the band to exp(-d^2 / 2 sigma^2), d^2 = squared_distance(point, v)
@@ -131,16 +133,24 @@ void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid,
   });
 }
 
+// The GEDT of a triangle soup of the given frame, on the grid `settings` describe.
+template <typename GT>
+Voxel_grid<GT> gaussian_distance_transform_of_triangles(const std::vector<Dtriangle>& triangles, const Shape_frame& frame,
+                                                       const Grid_settings& settings,
+                                                       std::vector<std::int32_t>* closest_triangles = nullptr)
+{
+  Voxel_grid<GT> grid = empty_grid<GT>(frame, settings);
+  fill_gaussian_distance_transform_of_triangles(grid, triangles, settings, closest_triangles);
+  return grid;
+}
+
 // The GEDT of a triangle soup, on the grid the named parameters describe.
 template <typename GT, typename NamedParameters>
 Voxel_grid<GT> gaussian_distance_transform_of_triangles(const std::vector<Dtriangle>& triangles, const NamedParameters& np,
                                                        std::vector<std::int32_t>* closest_triangles = nullptr)
 {
   const Shape_frame frame = frame_of_triangles(triangles);
-  const Grid_settings settings = grid_settings(np, frame.radius);
-  Voxel_grid<GT> grid = empty_grid<GT>(frame, settings);
-  fill_gaussian_distance_transform_of_triangles(grid, triangles, settings, closest_triangles);
-  return grid;
+  return gaussian_distance_transform_of_triangles<GT>(triangles, frame, grid_settings(np, frame.radius), closest_triangles);
 }
 
 template <typename GT>
@@ -153,8 +163,16 @@ void fill_gaussian_distance_transform_of_points(Voxel_grid<GT>& grid, const std:
   fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t) { return nearest(p).squared_distance; });
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+// The GEDT of a point set of the given frame, on the grid `settings` describe.
+template <typename GT>
+Voxel_grid<GT> gaussian_distance_transform_of_points(const std::vector<Dpoint>& points, const Shape_frame& frame,
+                                                     const Grid_settings& settings)
+{
+  Voxel_grid<GT> grid = empty_grid<GT>(frame, settings);
+  fill_gaussian_distance_transform_of_points(grid, points, settings);
+  return grid;
+}
+
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_GRID_GAUSSIAN_DISTANCE_TRANSFORM_H

@@ -13,21 +13,20 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/grid/filters.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
-#include <CGAL/Symmetry_transform/internal/prst/exact.h>
 
 #include <boost/random/discrete_distribution.hpp>
 #include <boost/random/mersenne_twister.hpp>
 #include <boost/random/uniform_01.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Trilinear interpolation that first looks up a coarse map of the blocks of 4^3 voxels that
 // can see a non-zero sample (a block and the voxel after it along each axis): most points of
@@ -77,11 +76,25 @@ private:
   std::vector<char> occupied_;
 };
 
-enum class Estimator { PAIR_JACOBIAN, BOUNDED_WEIGHT, STRATIFIED_LINES };
+// The random stream of piece `piece` of the work (a chunk of samples, a direction) from the
+// user's seed: Knuth's multiplicative hash of the seed plus a small odd multiple of the piece,
+// so that the streams of neighbouring pieces and seeds differ.
+inline std::uint32_t stream_seed(unsigned seed, std::size_t piece)
+{
+  return std::uint32_t(seed) * 2654435761u + std::uint32_t(piece) * 40503u + 1u;
+}
 
+// The voting estimators draw their samples in chunks of this many, each with its own stream:
+// large enough to amortise the per-chunk vote array, small enough to share the work.
+constexpr std::size_t monte_carlo_chunk = std::size_t(1) << 15;
+
+// The Monte Carlo estimators of the bins of a PRST (see Monte_carlo_estimator): each run_*()
+// fills `values` (n^3 bins) from `samples` samples, the random streams derived from `seed`.
 template <typename GT>
 class Monte_carlo_reflective_symmetry
 {
+  typedef boost::random::mt19937 Rng;
+
 public:
   Monte_carlo_reflective_symmetry(const Voxel_grid<GT>& f, const Plane_bins& bins)
     : f_(f), bins_(bins), h_(f.voxel_size())
@@ -98,41 +111,62 @@ public:
     support_ = support_radius(f);
   }
 
-  void run(Estimator estimator, std::size_t pairs, unsigned seed, unsigned threads, std::vector<double>& values) const
+  // The thesis's estimator: pairs of points drawn proportionally to f.
+  void run_pair_jacobian(std::size_t samples, unsigned seed, unsigned threads, std::vector<double>& values) const
   {
-    if(estimator == Estimator::STRATIFIED_LINES) {
-      run_stratified_lines(pairs, seed, threads, values);
-      return;
-    }
-    const std::size_t chunk = std::size_t(1) << 15, chunks = (pairs + chunk - 1) / chunk;
+    // Normalisation: Z = sum f h^3 and ||f||^2 = sum f^2 h^3 (see DESIGN.md).
+    const double scale = sum_ * sum_ * (h_ * h_ * h_) / (double(samples) * bins_.bin_volume() * sum_of_squares_);
+    run_votes(samples, seed, threads, scale, values,
+              [this](Rng& rng, std::size_t count, std::vector<double>& votes) { vote_pairs(rng, count, votes); });
+  }
+
+  // A point drawn proportionally to f and a plane drawn uniformly around it.
+  void run_bounded_weight(std::size_t samples, unsigned seed, unsigned threads, std::vector<double>& values) const
+  {
+    const double scale = sum_ * 2. * support_ * CGAL_PI * CGAL_PI / (double(samples) * bins_.bin_volume() * sum_of_squares_);
+    run_votes(samples, seed, threads, scale, values,
+              [this](Rng& rng, std::size_t count, std::vector<double>& votes) { vote_bounded(rng, count, votes); });
+  }
+
+  // For each bin direction, points x drawn proportionally to f by systematic sampling of the
+  // cumulative distribution (evenly spread, one random offset per direction), and f evaluated
+  // at the reflections of x through the planes of all offsets r_k: the pairs (x, x') lie on a
+  // line, so every offset of the direction is estimated from the same points. This estimates
+  // sum_x f(x) f(g(x)) / sum_x f(x)^2 at the bin centres, as the exact method computes.
+  void run_stratified_lines(std::size_t samples, unsigned seed, unsigned threads, std::vector<double>& values) const
+  {
+    const std::size_t n = bins_.n;
+    const Strata strata = strata_of_voxels((std::max<std::size_t>)(1, samples / (n * n)));
+    const Voxel_grid<GT> sharp = sharpened_for_trilinear_interpolation(f_);
+    const Sparse_trilinear_interpolation<GT> interpolate(sharp);
+    parallel_for(n * n, threads, [&](unsigned, std::size_t begin, std::size_t end) {
+      for(std::size_t direction = begin; direction < end; ++direction)
+        stratified_line(direction, strata, interpolate, seed, values.data() + direction * n);
+    });
+  }
+
+private:
+  // Sums the votes of `samples` samples, drawn by chunks, each thread into its own array, and
+  // writes them times `scale` into `values`. vote(rng, count, votes) draws `count` samples.
+  template <typename Vote>
+  void run_votes(std::size_t samples, unsigned seed, unsigned threads, double scale, std::vector<double>& values,
+                 const Vote& vote) const
+  {
+    const std::size_t chunks = (samples + monte_carlo_chunk - 1) / monte_carlo_chunk;
     threads = unsigned((std::min<std::size_t>)(threads, (std::max<std::size_t>)(chunks, 1)));
     std::vector<std::vector<double>> votes(threads);
     parallel_for(chunks, threads, [&](unsigned t, std::size_t begin, std::size_t end) {
       votes[t].assign(values.size(), 0.);
       for(std::size_t c = begin; c < end; ++c) {
-        boost::random::mt19937 rng(std::uint32_t(seed) * 2654435761u + std::uint32_t(c) * 40503u + 1u);
-        const std::size_t count = (std::min)(chunk, pairs - c * chunk);
-        if(estimator == Estimator::PAIR_JACOBIAN)
-          vote_pairs(rng, count, votes[t]);
-        else if(estimator == Estimator::BOUNDED_WEIGHT)
-          vote_bounded(rng, count, votes[t]);
-
+        Rng rng(stream_seed(seed, c));
+        vote(rng, (std::min)(monte_carlo_chunk, samples - c * monte_carlo_chunk), votes[t]);
       }
     });
-    // Normalisation: Z = sum f h^3 and ||f||^2 = sum f^2 h^3 (see DESIGN.md).
-    const double volume = h_ * h_ * h_;
-    const double scale = estimator == Estimator::PAIR_JACOBIAN
-                           ? sum_ * sum_ * volume / (double(pairs) * bins_.bin_volume() * sum_of_squares_)
-                           : sum_ * 2. * support_ * CGAL_PI * CGAL_PI /
-                               (double(pairs) * bins_.bin_volume() * sum_of_squares_);
     values.assign(values.size(), 0.);
     for(const std::vector<double>& v : votes)
       for(std::size_t b = 0; b < values.size(); ++b) values[b] += v[b];
     for(double& v : values) v *= scale;
   }
-
-private:
-  typedef boost::random::mt19937 Rng;
 
   std::array<double, 3> draw_point(Rng& rng) const
   {
@@ -194,63 +228,65 @@ private:
     }
   }
 
-  // For each bin direction, points x drawn proportionally to f by systematic sampling of the
-  // cumulative distribution (evenly spread, one random offset per direction), and f evaluated
-  // at the reflections of x through the planes of all offsets r_k: the pairs (x, x') lie on a
-  // line, so every offset of the direction is estimated from the same points. This estimates
-  // sum_x f(x) f(g(x)) / sum_x f(x)^2 at the bin centres, as the exact method computes.
-  void run_stratified_lines(std::size_t samples, unsigned seed, unsigned threads, std::vector<double>& values) const
+  // The non-zero voxels in the order of a Hilbert curve and the cumulative sum of f along it;
+  // each direction draws `per_direction` points from it.
+  struct Strata
   {
-    const std::size_t n = bins_.n;
-    const std::size_t per_direction = (std::max<std::size_t>)(1, samples / (n * n));
-    // Voxels in Hilbert-curve order: consecutive strata of the cumulative distribution are then
-    // compact regions of space, and systematic sampling spreads the points evenly on the shape.
-    std::vector<std::size_t> voxels = voxels_;
+    std::vector<std::size_t> voxels;
+    std::vector<double> cumulative;
+    std::size_t per_direction;
+  };
+
+  // In Hilbert-curve order, consecutive strata of the cumulative distribution are compact
+  // regions of space: systematic sampling spreads the points evenly on the shape.
+  Strata strata_of_voxels(std::size_t per_direction) const
+  {
+    Strata strata{voxels_, std::vector<double>(voxels_.size()), per_direction};
     const std::size_t res = f_.resolution();
-    std::sort(voxels.begin(), voxels.end(), [res](std::size_t a, std::size_t b) {
+    std::sort(strata.voxels.begin(), strata.voxels.end(), [res](std::size_t a, std::size_t b) {
       return hilbert_index(a % res, a / res % res, a / (res * res)) < hilbert_index(b % res, b / res % res, b / (res * res));
     });
-    std::vector<double> cumulative(voxels.size());
     double running = 0.;
-    for(std::size_t v = 0; v < voxels.size(); ++v) cumulative[v] = running += f_.values()[voxels[v]];
-    const double scale = sum_ / (double(per_direction) * sum_of_squares_);
-    const Voxel_grid<GT> sharp = sharpened_for_trilinear_interpolation(f_);
-    const Sparse_trilinear_interpolation<GT> interpolate(sharp);
-    const double step = bins_.offset_step(), support2 = support_ * support_;
+    for(std::size_t v = 0; v < strata.voxels.size(); ++v) strata.cumulative[v] = running += f_.values()[strata.voxels[v]];
+    return strata;
+  }
+
+  // The n values of the bins of direction `direction` into `line`.
+  void stratified_line(std::size_t direction, const Strata& strata, const Sparse_trilinear_interpolation<GT>& interpolate,
+                       unsigned seed, double* line) const
+  {
+    const std::size_t n = bins_.n, res = f_.resolution();
+    const double step = bins_.offset_step(), support2 = support_ * support_, running = strata.cumulative.back();
     const auto& o = f_.origin();
-    parallel_for(n * n, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-      for(std::size_t direction = begin; direction < end; ++direction) {
-        Rng rng(std::uint32_t(seed) * 2654435761u + std::uint32_t(direction) * 40503u + 1u);
-        const double offset = boost::random::uniform_01<double>()(rng);
-        const std::array<double, 3> nrm = bins_.normal(direction / n, direction % n);
-        double* line = values.data() + direction * n;
-        std::fill_n(line, n, 0.);
-        auto stratum = cumulative.begin();
-        for(std::size_t m = 0; m < per_direction; ++m) {
-          // Targets increase with m: each search starts where the previous one ended.
-          const double target = (double(m) + offset) / double(per_direction) * running;
-          stratum = std::lower_bound(stratum, cumulative.end() - 1, target);
-          const std::size_t v = voxels[std::size_t(stratum - cumulative.begin())];
-          const double x[3] = {o[0] + (double(v % res) + 0.5) * h_ - bins_.center[0],
-                               o[1] + (double(v / res % res) + 0.5) * h_ - bins_.center[1],
-                               o[2] + (double(v / (res * res)) + 0.5) * h_ - bins_.center[2]};
-          // x' - c = q + (2 r_k - s) n, q the part of x - c orthogonal to n: only the offsets
-          // with |x' - c| <= support can see f.
-          const double s = nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2];
-          const double q2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - s * s;
-          if(q2 > support2) continue;
-          const double reach = std::sqrt(support2 - q2);
-          const long first = (std::max)(0L, long(std::ceil(((s - reach) / 2. + bins_.radius) / step - 0.5)));
-          const long last = (std::min)(long(n) - 1, long(std::floor(((s + reach) / 2. + bins_.radius) / step - 0.5)));
-          for(long k = first; k <= last; ++k) {
-            const double t = 2. * (bins_.offset(std::size_t(k)) - s);
-            line[k] += interpolate(bins_.center[0] + x[0] + t * nrm[0], bins_.center[1] + x[1] + t * nrm[1],
-                                          bins_.center[2] + x[2] + t * nrm[2]);
-          }
-        }
-        for(std::size_t k = 0; k < n; ++k) line[k] *= scale;
+    Rng rng(stream_seed(seed, direction));
+    const double offset = boost::random::uniform_01<double>()(rng);
+    const std::array<double, 3> nrm = bins_.normal(direction / n, direction % n);
+    std::fill_n(line, n, 0.);
+    auto stratum = strata.cumulative.begin();
+    for(std::size_t m = 0; m < strata.per_direction; ++m) {
+      // Targets increase with m: each search starts where the previous one ended.
+      const double target = (double(m) + offset) / double(strata.per_direction) * running;
+      stratum = std::lower_bound(stratum, strata.cumulative.end() - 1, target);
+      const std::size_t v = strata.voxels[std::size_t(stratum - strata.cumulative.begin())];
+      const double x[3] = {o[0] + (double(v % res) + 0.5) * h_ - bins_.center[0],
+                           o[1] + (double(v / res % res) + 0.5) * h_ - bins_.center[1],
+                           o[2] + (double(v / (res * res)) + 0.5) * h_ - bins_.center[2]};
+      // x' - c = q + (2 r_k - s) n, q the part of x - c orthogonal to n: only the offsets
+      // with |x' - c| <= support can see f.
+      const double s = nrm[0] * x[0] + nrm[1] * x[1] + nrm[2] * x[2];
+      const double q2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - s * s;
+      if(q2 > support2) continue;
+      const double reach = std::sqrt(support2 - q2);
+      const long first = (std::max)(0L, long(std::ceil(((s - reach) / 2. + bins_.radius) / step - 0.5)));
+      const long last = (std::min)(long(n) - 1, long(std::floor(((s + reach) / 2. + bins_.radius) / step - 0.5)));
+      for(long k = first; k <= last; ++k) {
+        const double t = 2. * (bins_.offset(std::size_t(k)) - s);
+        line[k] += interpolate(bins_.center[0] + x[0] + t * nrm[0], bins_.center[1] + x[1] + t * nrm[1],
+                               bins_.center[2] + x[2] + t * nrm[2]);
       }
-    });
+    }
+    const double scale = sum_ / (double(strata.per_direction) * sum_of_squares_);
+    for(std::size_t k = 0; k < n; ++k) line[k] *= scale;
   }
 
   // Position of voxel (i,j,k) along a Hilbert curve through the grid (J. Skilling,
@@ -292,8 +328,6 @@ private:
   double sum_ = 0., sum_of_squares_ = 0., support_ = 0.;
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_MONTE_CARLO_H

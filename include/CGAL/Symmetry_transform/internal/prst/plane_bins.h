@@ -16,9 +16,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 struct Plane_bins
 {
@@ -80,8 +78,6 @@ struct Plane_bins
   }
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_PRST_PLANE_BINS_H

@@ -13,22 +13,28 @@
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
 
-
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
+
+// A face has a mirror face through a plane if a face centroid lies within this fraction of the
+// bounding-box diagonal of the mirror image of its centroid: twice the symmetry error of the
+// least symmetric meshes of the comparison (bull, elephant: about 1e-2 where they are
+// symmetric), so that an approximate symmetry still pairs faces, while the parts the plane
+// does not map (a turned head) find none.
+constexpr double mirror_face_distance = 0.02;
 
 // Per face and plane, the face whose centroid lies nearest to the mirror image of its centroid
-// (a Kd-tree query made once), or `none` if that is farther than `tolerance` (no symmetric
-// counterpart) or the face itself. With `strongest_only`, a face keeps only the plane whose
-// image lies closest.
+// (a Kd-tree query made once), or `none` if that is farther than `mirror_face_distance` (no
+// symmetric counterpart) or the face itself. With `strongest_only`, a face keeps only the plane
+// whose image lies closest.
 inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std::vector<Dplane>& planes,
-                                             double tolerance, bool strongest_only, unsigned threads)
+                                             bool strongest_only, unsigned threads)
 {
+  const double tolerance = mirror_face_distance * m.diagonal;
   const std::size_t nf = m.number_of_faces(), k = planes.size();
   std::vector<std::size_t> mirror(nf * k, Remeshing_mesh::none);
   if(k == 0) return mirror;
@@ -55,8 +61,22 @@ inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std:
   return mirror;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+// The working-mesh vertex nearest to a point (for the mirror images of anchors), or `none`
+// where there is no plane (the Kd-tree is only built where mirror images are looked for).
+class Nearest_vertex
+{
+public:
+  Nearest_vertex(const Remeshing_mesh& m, const std::vector<Dplane>& planes)
+  {
+    if(!planes.empty()) tree_.emplace(m.points);
+  }
+
+  std::size_t operator()(const Eigen::Vector3d& p) const { return tree_ ? (*tree_)(p).index : Remeshing_mesh::none; }
+
+private:
+  std::optional<Nearest_point> tree_;
+};
+
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_MIRRORS_H

@@ -5,65 +5,56 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PARTITION_H
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PARTITION_H
 
-// Symmetric proxy generation (thesis, Section 5.1.2): Lloyd iterations of Variational Shape
-// Approximation where a proxy is a plane with up to one connected patch per transform (the
-// identity and the reflection through each plane). A patch is labelled
+// The symmetric partition of the working mesh into proxies (thesis, Section 5.1.2), and its
+// Lloyd steps: flooding, fitting and teleportation. A proxy is a plane with up to one connected
+// patch per transform (the identity and the reflection through each plane). A patch is labelled
 // `proxy * transforms + transform` (transform 0: the identity, j + 1: plane j).
 //
 // Flooding: one priority queue, in increasing error, as in VSA; when a face joins a patch, its
-// neighbours are queued for that patch and the face nearest to its mirror image (a Kd-tree
-// query made once) is offered to the mirrored patch. The mirror joins at once if it fits that
-// patch about as well as the face fits its own (on an exactly symmetric mesh it always does, so
-// that the partition stays mirror-symmetric whatever the order of equal errors), else it is
-// queued with its own error and competes as any face. A patch stays connected: a face only joins
-// a non-empty patch next to one of its faces. Where a face has a mirror through a plane, a patch
-// of the identity or of that plane does not grow across the plane: its mirrored patch takes over
-// there, so that a proxy spanning the plane is cut along it into two mirrored patches.
-//
-// Mirror-consistent boundaries, after the last iteration: the flooding order decides where a
-// boundary runs on each side of a plane, so on a nearly symmetric mesh the two sides' boundaries,
-// and the junctions where the output's anchors go, still differ by a face here and there. A face
-// on the negative side of a plane then takes the mirror of its mirror face's patch, if it lies
-// next to that patch and fits it about as well as its own (the flooding's rule); a patch cut in
-// pieces by this keeps its largest piece and gives the others to neighbouring patches.
+// neighbours are queued for that patch and the face nearest to its mirror image (mirrors.h) is
+// offered to the mirrored patch. The mirror joins at once if it fits that patch about as well as
+// the face fits its own (on an exactly symmetric mesh it always does, so that the partition
+// stays mirror-symmetric whatever the order of equal errors), else it is queued with its own
+// error and competes as any face. A patch stays connected: a face only joins a non-empty patch
+// next to one of its faces. Where a face has a mirror through a plane, a patch of the identity
+// or of that plane does not grow across the plane: its mirrored patch takes over there, so that
+// a proxy spanning the plane is cut along it into two mirrored patches.
 //
 // Metric (thesis, "Error Metric"): E(t, P) = a_t (alpha |c_t - c_P|^2 / A_avg + (1 - alpha)
 // |n_t - n_P|^2), with c and n centroids and unit normals, P's parameters moved by the patch's
 // transform, a_t the area of t and A_avg the mean face area: the area-weighted form of the
 // thesis's metric, which is L2,1 (CGAL's default) for alpha = 0.
+//
+// The seeding is in seeding.h, the mirror-consistent boundaries in mirror_boundaries.h, the
+// whole sequence in proxy_generation.h.
 
+#include <CGAL/Symmetry_transform/internal/remeshing/settings.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
-#include <CGAL/Symmetry_transform/internal/remeshing/mirrors.h>
-
-#include <CGAL/Random.h>
-#include <CGAL/Variational_shape_approximation.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <functional>
-#include <iostream>
 #include <limits>
 #include <queue>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
-struct Remeshing_settings
-{
-  std::vector<Dplane> planes;
-  double position_weight = 0.;        // alpha
-  bool strongest_plane_only = false;
-  std::size_t max_number_of_proxies = 0;
-  double min_error_drop = 0.;
-  std::size_t number_of_iterations = 20, number_of_relaxations = 5;
-  Surface_mesh_approximation::Seeding_method seeding = Surface_mesh_approximation::HIERARCHICAL;
-  unsigned random_seed = 0;
-  unsigned threads = 1;
-  bool verbose = false;
-};
+// A mirror face fits its mirrored patch "about as well" as the face it mirrors fits its own if
+// its error is at most this factor times that error, plus this fraction of its area (at
+// alpha = 0, the error of a normal deviation |n_t - n_P| of 0.1): loose enough for rounding and
+// the small asymmetries of a nearly symmetric mesh, tight enough that a mirror that fits clearly
+// worse competes in the queue instead.
+constexpr double mirror_fit_factor = 2.;
+constexpr double mirror_fit_slack = 0.01;
+
+// Patch teleportation: a patch of less than this fraction of the area of its proxy's largest
+// patch is closed for the next partition (a sliver left by the flooding order).
+constexpr double closed_patch_fraction = 0.05;
+
+// Proxy teleportation (CGAL's teleport_proxies): a merge of two proxies is done if it costs
+// less than this fraction of the error of the worst proxy.
+constexpr double max_merge_cost = 0.5;
 
 class Symmetric_partition
 {
@@ -80,47 +71,34 @@ public:
     Eigen::Vector3d normals = Eigen::Vector3d::Zero(), centers = Eigen::Vector3d::Zero();
   };
 
-  Symmetric_partition(const Remeshing_mesh& mesh, const Remeshing_settings& settings,
-                      const std::vector<std::size_t>& mirror, const std::vector<std::uint64_t>& vertex_planes)
-    : m_(mesh), s_(settings), mirror_(mirror), vertex_planes_(vertex_planes), k_(settings.planes.size()),
-      t_(k_ + 1)
+  // `mirror[f * planes + j]`: the mirror face of f through plane j, or `none` (mirror_faces()).
+  Symmetric_partition(const Remeshing_mesh& mesh, const Remeshing_settings& settings, const std::vector<std::size_t>& mirror)
+    : mesh_(mesh), settings_(settings), mirror_(mirror), plane_count_(settings.planes.size()),
+      transform_count_(plane_count_ + 1)
   {
     double total = 0.;
-    for(double a : m_.area) total += a;
-    const double average_area = total / double(m_.number_of_faces());
-    wn_ = 1. - s_.position_weight;
-    wp_ = average_area > 0. ? s_.position_weight / average_area : 0.;
-    label_.assign(m_.number_of_faces(), none);
-    // The data the flooding reads, packed per face (one cache line) for speed.
-    face_.resize(m_.number_of_faces());
-    neighbor_.resize(3 * m_.number_of_faces());
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      Face_data& d = face_[f];
-      for(int i = 0; i < 3; ++i) {
-        d.n[i] = m_.normal[f][i];
-        d.c[i] = m_.centroid[f][i];
-        neighbor_[3 * f + i] = m_.neighbor(3 * f + i);
-      }
-      d.a = m_.area[f];
-    }
-    // Per halfedge the planes it lies on, per face the planes through which it has a mirror.
-    edge_planes_.assign(3 * m_.number_of_faces(), 0);
-    mirror_planes_.assign(m_.number_of_faces(), 0);
-    for(std::size_t h = 0; h < edge_planes_.size(); ++h)
-      edge_planes_[h] = vertex_planes_[m_.source(h)] & vertex_planes_[m_.target(h)];
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f)
-      for(std::size_t j = 0; j < k_; ++j)
-        if(mirror_[f * k_ + j] != none) mirror_planes_[f] |= std::uint64_t(1) << j;
+    for(double a : mesh_.area) total += a;
+    const double average_area = total / double(mesh_.number_of_faces());
+    normal_weight_ = 1. - settings_.position_weight;
+    position_weight_ = average_area > 0. ? settings_.position_weight / average_area : 0.;
+    label_.assign(mesh_.number_of_faces(), none);
+    pack_face_data();
   }
 
-  std::size_t transforms() const { return t_; }
+  const Remeshing_mesh& mesh() const { return mesh_; }
+  const Remeshing_settings& settings() const { return settings_; }
+  std::size_t transforms() const { return transform_count_; }
+  std::size_t plane_count() const { return plane_count_; }
   const std::vector<std::size_t>& labels() const { return label_; }
   const std::vector<Proxy>& proxies() const { return proxies_; }
-  std::size_t proxy_of(std::size_t label) const { return label / t_; }
+  std::size_t proxy_of(std::size_t label) const { return label / transform_count_; }
+  std::size_t mirror_face(std::size_t f, std::size_t plane) const { return mirror_[f * plane_count_ + plane]; }
+  // Whether the patch is closed by patch teleportation (see fit()).
+  bool is_closed(std::size_t label) const { return closed_[label] != 0; }
 
   // The plane of a patch: the proxy's, moved by the patch's transform.
-  const Eigen::Vector3d& patch_normal(std::size_t label) const { return tn_[label]; }
-  const Eigen::Vector3d& patch_center(std::size_t label) const { return tc_[label]; }
+  const Eigen::Vector3d& patch_normal(std::size_t label) const { return patch_plane_[label].normal; }
+  const Eigen::Vector3d& patch_center(std::size_t label) const { return patch_plane_[label].center; }
   double patch_area(std::size_t label) const { return patch_area_[label]; }
 
   double total_error() const
@@ -130,249 +108,23 @@ public:
     return e;
   }
 
-  // Seeding as CGAL's VSA (initialize_seeds), then `number_of_iterations` iterations with a
-  // teleportation attempt after each `number_of_relaxations` of them.
-  void run()
-  {
-    std::size_t max_proxies = s_.max_number_of_proxies;
-    double min_drop = s_.min_error_drop;
-    const std::size_t nf = m_.number_of_faces();
-    if(max_proxies < nf / 3 && max_proxies > 0) {
-      if(!(min_drop < 1.) || !(min_drop > 0.)) min_drop = -1.;
-    } else {
-      max_proxies = nf / 3;
-      if(!(min_drop < 1.) || !(min_drop > 0.)) min_drop = 0.1;
-    }
-    bootstrap();
-    if(proxies_.size() < max_proxies) {
-      if(s_.seeding == Surface_mesh_approximation::RANDOM) seed_random(max_proxies);
-      else if(s_.seeding == Surface_mesh_approximation::INCREMENTAL) seed_incremental(max_proxies, min_drop);
-      else seed_hierarchical(max_proxies, min_drop);
-    }
-    if(s_.verbose) std::cerr << "  seeding: " << proxies_.size() << " proxies, error " << total_error() << "\n";
-    const std::size_t relax = (std::max<std::size_t>)(1, s_.number_of_relaxations);
-    for(std::size_t i = 0; i < s_.number_of_iterations; ++i) {
-      if(i > 0 && i % relax == 0) teleport();
-      iterate();
-    }
-    if(s_.verbose) std::cerr << "  " << s_.number_of_iterations << " iterations: error " << total_error() << "\n";
-    if(k_ > 0 && mirror_boundaries() > 0) {
-      reconnect_patches();
-      fit();
-    }
-  }
-
-private:
-  struct Candidate
-  {
-    double error;
-    std::uint32_t face, label;
-    bool operator>(const Candidate& c) const
-    {
-      return error > c.error || (error == c.error && key() > c.key());
-    }
-    std::uint64_t key() const { return (std::uint64_t(face) << 32) | label; }
-  };
-
-  // Face data of face f in the frame of transform i.
-  Eigen::Vector3d frame_normal(std::size_t f, std::size_t i) const
-  {
-    return i == 0 ? m_.normal[f] : reflect_vector(s_.planes[i - 1], m_.normal[f]);
-  }
-  Eigen::Vector3d frame_centroid(std::size_t f, std::size_t i) const
-  {
-    return i == 0 ? m_.centroid[f] : s_.planes[i - 1].reflect(m_.centroid[f]);
-  }
-
+  // The error of face f for the patch `label`.
   double error(std::size_t f, std::size_t label) const
   {
-    const Face_data& d = face_[f];
-    const Target& t = target_[label];
+    const Face_data& d = face_data_[f];
+    const Patch_plane& t = patch_plane_[label];
     double n2 = 0., c2 = 0.;
-    for(int i = 0; i < 3; ++i) n2 += (d.n[i] - t.n[i]) * (d.n[i] - t.n[i]);
-    if(wp_ > 0.)
-      for(int i = 0; i < 3; ++i) c2 += (d.c[i] - t.c[i]) * (d.c[i] - t.c[i]);
-    return d.a * (wn_ * n2 + wp_ * c2);
-  }
-
-  void update_targets(std::size_t p)
-  {
-    for(std::size_t i = 0; i < t_; ++i) {
-      const std::size_t l = p * t_ + i;
-      tn_[l] = i == 0 ? proxies_[p].normal : reflect_vector(s_.planes[i - 1], proxies_[p].normal);
-      tc_[l] = i == 0 ? proxies_[p].center : s_.planes[i - 1].reflect(proxies_[p].center);
-      for(int c = 0; c < 3; ++c) {
-        target_[l].n[c] = tn_[l][c];
-        target_[l].c[c] = tc_[l][c];
-      }
-    }
-  }
-
-  void resize_labels()
-  {
-    tn_.resize(proxies_.size() * t_);
-    tc_.resize(proxies_.size() * t_);
-    target_.resize(proxies_.size() * t_);
-    patch_area_.resize(proxies_.size() * t_, 0.);
-    disabled_.resize(proxies_.size() * t_, 0);
-    for(std::size_t p = 0; p < proxies_.size(); ++p) update_targets(p);
-  }
-
-  std::size_t add_proxy_at(std::size_t f)
-  {
-    Proxy p;
-    p.normal = m_.normal[f].squaredNorm() > 0. ? m_.normal[f] : Eigen::Vector3d::UnitZ();
-    p.center = m_.centroid[f];
-    p.seed = f;
-    p.seed_label = proxies_.size() * t_;
-    proxies_.push_back(p);
-    resize_labels();
-    return proxies_.size() - 1;
-  }
-
-  bool can_join(std::size_t f, std::size_t label) const
-  {
-    if(disabled_[label]) return false;
-    return patch_faces_[label] == 0 || next_to(f, label);
+    for(int i = 0; i < 3; ++i) n2 += (d.normal[i] - t.normal[i]) * (d.normal[i] - t.normal[i]);
+    if(position_weight_ > 0.)
+      for(int i = 0; i < 3; ++i) c2 += (d.centroid[i] - t.center[i]) * (d.centroid[i] - t.center[i]);
+    return d.area * (normal_weight_ * n2 + position_weight_ * c2);
   }
 
   // Whether an error `e` of face f for a mirrored patch is about that of the face it mirrors
   // (`reference`): on an exactly symmetric mesh it always is.
   bool fits_about_as_well(std::size_t f, double e, double reference) const
   {
-    return e <= 2. * reference + 0.01 * face_[f].a;
-  }
-
-  void assign(std::size_t f, std::size_t label)
-  {
-    stack_.clear();
-    stack_.push_back({0., std::uint32_t(f), std::uint32_t(label)});
-    while(!stack_.empty()) {
-      const Candidate c = stack_.back();
-      stack_.pop_back();
-      const std::size_t g = c.face, l = c.label;
-      if(label_[g] != none) continue;
-      label_[g] = l;
-      ++patch_faces_[l];
-      const std::size_t p = l / t_, i = l % t_;
-      double e = -1.;
-      for(int h = 0; h < 3; ++h) {
-        const std::size_t n = neighbor_[3 * g + h];
-        if(n == none || label_[n] != none) continue;
-        // A patch of the identity or of plane j does not cross plane j where the face has a mirror.
-        if(edge_planes_[3 * g + h] & mirror_planes_[g] & (i == 0 ? ~std::uint64_t(0) : std::uint64_t(1) << (i - 1)))
-          continue;
-        // An entry that cannot beat one already queued for the face is left out (every queued
-        // entry succeeds if its face is still free when popped: patches only grow).
-        const double en = error(n, l);
-        if(en > best_[n]) continue;
-        best_[n] = en;
-        heap_.push({en, std::uint32_t(n), std::uint32_t(l)});
-      }
-      for(std::size_t j = 0; j < k_; ++j) {
-        if(i != 0 && i != j + 1) continue; // reflections of the identity patch, and back to it
-        const std::size_t mf = mirror_[g * k_ + j];
-        if(mf == none || label_[mf] != none) continue;
-        const std::size_t ml = p * t_ + (i == 0 ? j + 1 : 0);
-        // Not next to its patch yet: it will be offered again when a face next to it is mirrored there.
-        if(!can_join(mf, ml)) continue;
-        const double me = error(mf, ml);
-        if(e < 0.) e = error(g, l);
-        if(fits_about_as_well(mf, me, e))
-          stack_.push_back({me, std::uint32_t(mf), std::uint32_t(ml)});
-        else if(me <= best_[mf]) {
-          best_[mf] = me;
-          heap_.push({me, std::uint32_t(mf), std::uint32_t(ml)});
-        }
-      }
-    }
-  }
-
-  void partition()
-  {
-    const std::size_t nf = m_.number_of_faces();
-    label_.assign(nf, none);
-    best_.assign(nf, std::numeric_limits<double>::infinity());
-    patch_faces_.assign(proxies_.size() * t_, 0);
-    for(const Proxy& p : proxies_)
-      if(p.seed != none && label_[p.seed] == none) assign(p.seed, p.seed_label);
-    auto flood = [&] {
-      while(!heap_.empty()) {
-        const Candidate c = heap_.top();
-        heap_.pop();
-        if(label_[c.face] == none && can_join(c.face, c.label)) assign(c.face, c.label);
-      }
-    };
-    flood();
-    // Faces no seed reached (a component whose seeds were taken by mirrors): proxies left
-    // without a face are seeded there first, then the rest join a neighbouring patch.
-    std::size_t next = 0;
-    for(std::size_t p = 0; p < proxies_.size(); ++p) {
-      bool empty = true;
-      for(std::size_t i = 0; i < t_ && empty; ++i) empty = patch_faces_[p * t_ + i] == 0;
-      if(!empty) continue;
-      while(next < nf && label_[next] != none) ++next;
-      if(next == nf) break;
-      proxies_[p].normal = m_.normal[next].squaredNorm() > 0. ? m_.normal[next] : Eigen::Vector3d::UnitZ();
-      proxies_[p].center = m_.centroid[next];
-      update_targets(p);
-      assign(next, p * t_);
-      flood();
-    }
-    join_neighbouring_patches();
-  }
-
-  // Unlabelled faces join a neighbouring patch (those of a component with none, patch 0).
-  void join_neighbouring_patches()
-  {
-    const std::size_t nf = m_.number_of_faces();
-    for(bool changed = true; changed;) {
-      changed = false;
-      for(std::size_t f = 0; f < nf; ++f) {
-        if(label_[f] != none) continue;
-        for(int h = 0; h < 3 && label_[f] == none; ++h) {
-          const std::size_t n = m_.neighbor(3 * f + h);
-          if(n != none && label_[n] != none) {
-            label_[f] = label_[n];
-            ++patch_faces_[label_[f]];
-            changed = true;
-          }
-        }
-      }
-    }
-    for(std::size_t f = 0; f < nf; ++f)
-      if(label_[f] == none) {
-        label_[f] = 0;
-        ++patch_faces_[0];
-      }
-  }
-
-  // Faces of the negative side of each plane relabelled after their mirror faces (see the top
-  // of the file), in sweeps until none changes; returns how many changed. A face does not join a
-  // patch across the plane, as in the flooding.
-  std::size_t mirror_boundaries()
-  {
-    const std::size_t nf = m_.number_of_faces();
-    std::size_t changed = 0;
-    for(std::size_t j = 0; j < k_; ++j)
-      for(std::size_t sweep = 0, before = ~std::size_t(0); sweep < 10 && changed != before; ++sweep) {
-        before = changed;
-        for(std::size_t f = 0; f < nf; ++f) {
-          const std::size_t mf = mirror_[f * k_ + j];
-          if(mf == none || signed_distance(s_.planes[j], m_.centroid[f]) >= 0.) continue;
-          const std::size_t ml = label_[mf], i = ml % t_;
-          if(i != 0 && i != j + 1) continue;
-          const std::size_t target = ml - i + (i == 0 ? j + 1 : 0);
-          if(label_[f] == target || disabled_[target] || !next_to(f, target, std::uint64_t(1) << j) ||
-             !fits_about_as_well(f, error(f, target), error(f, label_[f])))
-            continue;
-          --patch_faces_[label_[f]];
-          label_[f] = target;
-          ++patch_faces_[target];
-          ++changed;
-        }
-      }
-    return changed;
+    return e <= mirror_fit_factor * reference + mirror_fit_slack * face_data_[f].area;
   }
 
   // Whether face f shares an edge with the patch, not counting edges on the planes of
@@ -386,99 +138,43 @@ private:
     return false;
   }
 
-  // Each patch connected: the faces of all but its largest piece join neighbouring patches.
-  void reconnect_patches()
+  // A new proxy, the plane of face f, seeded there.
+  std::size_t add_proxy_at(std::size_t f)
   {
-    const std::size_t nf = m_.number_of_faces();
-    std::vector<std::size_t> piece(nf, none), stack;
-    std::vector<double> piece_area;
-    for(std::size_t f = 0; f < nf; ++f) {
-      if(piece[f] != none) continue;
-      piece[f] = piece_area.size();
-      piece_area.push_back(0.);
-      stack.assign(1, f);
-      while(!stack.empty()) {
-        const std::size_t g = stack.back();
-        stack.pop_back();
-        piece_area.back() += m_.area[g];
-        for(int h = 0; h < 3; ++h) {
-          const std::size_t n = neighbor_[3 * g + h];
-          if(n != none && piece[n] == none && label_[n] == label_[g]) {
-            piece[n] = piece[f];
-            stack.push_back(n);
-          }
-        }
-      }
-    }
-    std::vector<std::size_t> largest(proxies_.size() * t_, none);
-    for(std::size_t f = 0; f < nf; ++f) {
-      std::size_t& l = largest[label_[f]];
-      if(l == none || piece_area[piece[f]] > piece_area[l]) l = piece[f];
-    }
-    for(std::size_t f = 0; f < nf; ++f)
-      if(piece[f] != largest[label_[f]]) {
-        --patch_faces_[label_[f]];
-        label_[f] = none;
-      }
-    join_neighbouring_patches();
+    Proxy p;
+    p.normal = mesh_.normal[f].squaredNorm() > 0. ? mesh_.normal[f] : Eigen::Vector3d::UnitZ();
+    p.center = mesh_.centroid[f];
+    p.seed = f;
+    p.seed_label = proxies_.size() * transform_count_;
+    proxies_.push_back(p);
+    resize_labels();
+    return proxies_.size() - 1;
   }
 
-  // Proxy parameters from their faces (area-weighted normal and centroid in the identity frame),
-  // then errors, seeds (the best face of each proxy) and patch areas. A patch much smaller than
-  // its proxy's largest is closed for the next partition (patch teleportation): its faces go
-  // to other patches, and the proxy may grow it again afterwards.
-  void fit()
+  // One proxy per piece (`piece` of each face, `first_faces` of each piece), seeded at the
+  // piece's first face and fitted to the piece, every face in the identity patch of its piece.
+  void reset_to_pieces(const std::vector<std::size_t>& piece, const std::vector<std::size_t>& first_faces)
   {
-    const std::size_t np = proxies_.size();
-    for(Proxy& p : proxies_) {
-      p.area = p.squares = 0.;
-      p.normals = p.centers = Eigen::Vector3d::Zero();
-    }
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      Proxy& p = proxies_[label_[f] / t_];
-      const std::size_t i = label_[f] % t_;
-      const double a = m_.area[f];
-      const Eigen::Vector3d c = frame_centroid(f, i);
-      p.area += a;
-      p.normals += a * frame_normal(f, i);
-      p.centers += a * c;
-      p.squares += a * c.squaredNorm();
-    }
-    for(std::size_t q = 0; q < np; ++q) {
-      Proxy& p = proxies_[q];
-      if(p.normals.squaredNorm() > 0.) p.normal = p.normals.normalized();
-      if(p.area > 0.) p.center = p.centers / p.area;
-      p.error = 0.;
-      p.seed = none;
-      update_targets(q);
-    }
-    std::fill(patch_area_.begin(), patch_area_.end(), 0.);
-    std::vector<double> best(np, 0.);
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f) {
-      const std::size_t l = label_[f];
-      Proxy& p = proxies_[l / t_];
-      const double e = error(f, l);
-      p.error += e;
-      patch_area_[l] += m_.area[f];
-      if(p.seed == none || e < best[l / t_]) {
-        p.seed = f;
-        p.seed_label = l;
-        best[l / t_] = e;
-      }
-    }
-    for(std::size_t q = 0; q < np; ++q) {
-      double largest = 0.;
-      for(std::size_t i = 0; i < t_; ++i) largest = (std::max)(largest, patch_area_[q * t_ + i]);
-      for(std::size_t i = 0; i < t_; ++i) {
-        const std::size_t l = q * t_ + i;
-        disabled_[l] = patch_area_[l] > 0. && patch_area_[l] < 0.05 * largest && l != proxies_[q].seed_label;
-      }
-    }
+    proxies_.clear();
+    for(std::size_t f : first_faces) add_proxy_at(f);
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f) label_[f] = piece[f] * transform_count_;
+    patch_face_count_.assign(proxies_.size() * transform_count_, 0);
+    fit();
+    std::fill(closed_.begin(), closed_.end(), 0);
   }
 
+  // Moves face f to the patch `label` (`none`: to no patch).
+  void relabel(std::size_t f, std::size_t label)
+  {
+    if(label_[f] != none) --patch_face_count_[label_[f]];
+    label_[f] = label;
+    if(label != none) ++patch_face_count_[label];
+  }
+
+  // One Lloyd iteration: flooding, then fitting; returns the total error.
   double iterate()
   {
-    partition();
+    flood_from_seeds();
     fit();
     return total_error();
   }
@@ -490,84 +186,6 @@ private:
     return e;
   }
 
-  // One proxy per connected component of the mesh.
-  void bootstrap()
-  {
-    const std::size_t nf = m_.number_of_faces();
-    std::vector<std::size_t> component(nf, none), stack;
-    proxies_.clear();
-    for(std::size_t f = 0; f < nf; ++f) {
-      if(component[f] != none) continue;
-      const std::size_t c = proxies_.size();
-      add_proxy_at(f);
-      component[f] = c;
-      stack.assign(1, f);
-      while(!stack.empty()) {
-        const std::size_t g = stack.back();
-        stack.pop_back();
-        for(int h = 0; h < 3; ++h) {
-          const std::size_t n = m_.neighbor(3 * g + h);
-          if(n != none && component[n] == none) {
-            component[n] = c;
-            stack.push_back(n);
-          }
-        }
-      }
-    }
-    for(std::size_t f = 0; f < nf; ++f) label_[f] = component[f] * t_;
-    patch_faces_.assign(proxies_.size() * t_, 0);
-    fit();
-    std::fill(disabled_.begin(), disabled_.end(), 0);
-  }
-
-  // CGAL's error diffusion: `count` new proxies, shared among the proxies in proportion to their
-  // error (to their size if all errors are zero), each placed at faces spread over its region.
-  std::size_t add_proxies_by_error(std::size_t count)
-  {
-    const std::size_t np = proxies_.size(), nf = m_.number_of_faces();
-    std::vector<std::vector<std::size_t>> region(np);
-    for(std::size_t f = 0; f < nf; ++f) region[label_[f] / t_].push_back(f);
-    std::vector<double> weight(np);
-    double sum = 0.;
-    for(std::size_t p = 0; p < np; ++p) sum += weight[p] = proxies_[p].error;
-    if(!(sum > 0.)) {
-      sum = 0.;
-      for(std::size_t p = 0; p < np; ++p) sum += weight[p] = double(region[p].size());
-    }
-    std::vector<std::size_t> order(np);
-    for(std::size_t p = 0; p < np; ++p) order[p] = p;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return weight[a] < weight[b]; });
-    const double unit = sum / double(count);
-    double residual = 0.;
-    std::size_t added = 0;
-    for(std::size_t p : order) {
-      const double share = (residual + weight[p]) / unit;
-      const double rounded = std::floor(share + 0.5);
-      residual = (share - rounded) * unit;
-      std::size_t n = (std::min)(std::size_t((std::max)(0., rounded)), region[p].size() - 1);
-      for(std::size_t q = 0; q < n; ++q) {
-        const std::size_t at = std::size_t((double(q) + 0.5) * double(region[p].size()) / double(n));
-        std::size_t f = region[p][at];
-        if(f == proxies_[p].seed) f = region[p][(at + 1) % region[p].size()];
-        add_proxy_at(f);
-        ++added;
-      }
-    }
-    return added;
-  }
-
-  void seed_hierarchical(std::size_t max_proxies, double min_drop)
-  {
-    const double initial = total_error();
-    double drop = !(min_drop > 0.) ? 1. : 2. * min_drop;
-    while(proxies_.size() < max_proxies && drop > min_drop) {
-      const std::size_t target = (std::min)(2 * proxies_.size(), max_proxies);
-      if(add_proxies_by_error(target - proxies_.size()) == 0) break;
-      const double e = run_iterations(s_.number_of_relaxations);
-      drop = initial > 0. ? e / initial : 0.;
-    }
-  }
-
   // The face of largest error of the worst proxy, other than its seed, or `none`.
   std::size_t worst_face(std::size_t* worst_proxy = nullptr) const
   {
@@ -576,8 +194,8 @@ private:
       if(proxies_[p].error > proxies_[worst].error) worst = p;
     std::size_t face = none;
     double largest = -1.;
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f)
-      if(label_[f] / t_ == worst && f != proxies_[worst].seed) {
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
+      if(label_[f] / transform_count_ == worst && f != proxies_[worst].seed) {
         const double e = error(f, label_[f]);
         if(e > largest) {
           largest = e;
@@ -588,69 +206,40 @@ private:
     return face;
   }
 
-  void seed_incremental(std::size_t max_proxies, double min_drop)
+  // Proxy parameters from their faces (area-weighted normal and centroid in the identity frame),
+  // then errors, seeds (the best face of each proxy) and patch areas. A patch much smaller than
+  // its proxy's largest is closed for the next partition (patch teleportation): its faces go
+  // to other patches, and the proxy may grow it again afterwards.
+  void fit()
   {
-    const double initial = total_error();
-    double drop = !(min_drop > 0.) ? 1. : 2. * min_drop;
-    while(proxies_.size() < max_proxies && drop > min_drop) {
-      const std::size_t f = worst_face();
-      if(f == none) break;
-      add_proxy_at(f);
-      const double e = run_iterations(s_.number_of_relaxations);
-      drop = initial > 0. ? e / initial : 0.;
+    fit_planes();
+    std::fill(patch_area_.begin(), patch_area_.end(), 0.);
+    std::vector<double> best(proxies_.size(), 0.);
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f) {
+      const std::size_t l = label_[f];
+      Proxy& p = proxies_[l / transform_count_];
+      const double e = error(f, l);
+      p.error += e;
+      patch_area_[l] += mesh_.area[f];
+      if(p.seed == none || e < best[l / transform_count_]) {
+        p.seed = f;
+        p.seed_label = l;
+        best[l / transform_count_] = e;
+      }
     }
-  }
-
-  void seed_random(std::size_t max_proxies)
-  {
-    CGAL::Random random(s_.random_seed);
-    const std::size_t nf = m_.number_of_faces();
-    std::vector<char> taken(nf, 0);
-    for(const Proxy& p : proxies_) taken[p.seed] = 1;
-    while(proxies_.size() < max_proxies) {
-      const std::size_t f = std::size_t(random.get_int(0, int(nf)));
-      if(taken[f]) continue;
-      taken[f] = 1;
-      add_proxy_at(f);
-    }
-    run_iterations(s_.number_of_relaxations);
-  }
-
-  // Optimal error of the moments of a set of faces (in the identity frame).
-  double moment_error(double area, const Eigen::Vector3d& normals, const Eigen::Vector3d& centers, double squares) const
-  {
-    if(!(area > 0.)) return 0.;
-    return wn_ * (2. * area - 2. * normals.norm()) + wp_ * (squares - centers.squaredNorm() / area);
+    close_small_patches();
   }
 
   // Proxy teleportation (CGAL's teleport_proxies): the adjacent pair whose merge costs least is
   // merged, and the freed proxy is moved to the worst face of the worst proxy, if the merge costs
-  // less than half the worst proxy's error.
+  // less than `max_merge_cost` times the worst proxy's error.
   bool teleport()
   {
     std::size_t worst = 0;
     const std::size_t target = worst_face(&worst);
     if(target == none) return false;
-    double best = 0.;
-    std::size_t a = none, b = none;
-    for(std::size_t f = 0; f < m_.number_of_faces(); ++f)
-      for(int h = 0; h < 3; ++h) {
-        const std::size_t n = m_.neighbor(3 * f + h);
-        if(n == none) continue;
-        std::size_t p = label_[f] / t_, q = label_[n] / t_;
-        if(p >= q || p == worst || q == worst) continue;
-        const Proxy &x = proxies_[p], &y = proxies_[q];
-        const double change = moment_error(x.area + y.area, x.normals + y.normals, x.centers + y.centers,
-                                           x.squares + y.squares) -
-                              moment_error(x.area, x.normals, x.centers, x.squares) -
-                              moment_error(y.area, y.normals, y.centers, y.squares);
-        if(a == none || change < best) {
-          best = change;
-          a = p;
-          b = q;
-        }
-      }
-    if(a == none || best > proxies_[worst].error / 2.) return false;
+    const auto [a, b, cost] = cheapest_merge(worst);
+    if(a == none || cost > proxies_[worst].error * max_merge_cost) return false;
     Proxy& x = proxies_[a];
     const Proxy& y = proxies_[b];
     x.area += y.area;
@@ -659,47 +248,305 @@ private:
     x.squares += y.squares;
     if(x.normals.squaredNorm() > 0.) x.normal = x.normals.normalized();
     if(x.area > 0.) x.center = x.centers / x.area;
-    update_targets(a);
+    update_patch_planes(a);
     Proxy moved;
-    moved.normal = m_.normal[target].squaredNorm() > 0. ? m_.normal[target] : Eigen::Vector3d::UnitZ();
-    moved.center = m_.centroid[target];
+    moved.normal = mesh_.normal[target].squaredNorm() > 0. ? mesh_.normal[target] : Eigen::Vector3d::UnitZ();
+    moved.center = mesh_.centroid[target];
     moved.seed = target;
-    moved.seed_label = b * t_;
+    moved.seed_label = b * transform_count_;
     proxies_[b] = moved;
-    update_targets(b);
-    for(std::size_t i = 0; i < t_; ++i) disabled_[b * t_ + i] = disabled_[a * t_ + i] = 0;
+    update_patch_planes(b);
+    for(std::size_t i = 0; i < transform_count_; ++i) closed_[b * transform_count_ + i] = closed_[a * transform_count_ + i] = 0;
     return true;
   }
 
-  const Remeshing_mesh& m_;
-  const Remeshing_settings& s_;
-  const std::vector<std::size_t>& mirror_;
-  const std::vector<std::uint64_t>& vertex_planes_;
-  const std::size_t k_, t_;
-  double wn_ = 1., wp_ = 0.;
-  std::vector<Proxy> proxies_;
-  std::vector<std::size_t> label_, patch_faces_;
-  std::vector<Eigen::Vector3d> tn_, tc_;
+  // Unlabelled faces join a neighbouring patch (those of a component with none, patch 0).
+  void join_neighbouring_patches()
+  {
+    const std::size_t nf = mesh_.number_of_faces();
+    for(bool changed = true; changed;) {
+      changed = false;
+      for(std::size_t f = 0; f < nf; ++f) {
+        if(label_[f] != none) continue;
+        for(int h = 0; h < 3 && label_[f] == none; ++h) {
+          const std::size_t n = mesh_.neighbor(3 * f + h);
+          if(n != none && label_[n] != none) {
+            relabel(f, label_[n]);
+            changed = true;
+          }
+        }
+      }
+    }
+    for(std::size_t f = 0; f < nf; ++f)
+      if(label_[f] == none) relabel(f, 0);
+  }
+
+private:
+  // A face offered to a patch, ordered by error, then by face and patch (a deterministic order).
+  struct Candidate
+  {
+    double error;
+    std::uint32_t face, label;
+    bool operator>(const Candidate& c) const { return error > c.error || (error == c.error && key() > c.key()); }
+    std::uint64_t key() const { return (std::uint64_t(face) << 32) | label; }
+  };
+
+  // What the error of a face reads, packed in one record of 64 bytes (a cache line; `padding`
+  // fills it), for the speed of the flooding, which computes an error per queued face.
   struct Face_data
   {
-    double n[3], c[3], a, unused;
+    Eigen::Vector3d normal, centroid;
+    double area, padding;
   };
-  struct Target
+
+  // The plane of a patch, in the patch's frame.
+  struct Patch_plane
   {
-    double n[3], c[3];
+    Eigen::Vector3d normal, center;
   };
-  std::vector<Face_data> face_;
-  std::vector<Target> target_;
-  std::vector<std::size_t> neighbor_;
+
+  void pack_face_data()
+  {
+    const std::size_t nf = mesh_.number_of_faces();
+    face_data_.resize(nf);
+    neighbor_.resize(3 * nf);
+    for(std::size_t f = 0; f < nf; ++f) {
+      face_data_[f].normal = mesh_.normal[f];
+      face_data_[f].centroid = mesh_.centroid[f];
+      face_data_[f].area = mesh_.area[f];
+      for(int i = 0; i < 3; ++i) neighbor_[3 * f + i] = mesh_.neighbor(3 * f + i);
+    }
+    // Per halfedge the planes it lies on, per face the planes through which it has a mirror.
+    edge_planes_.assign(3 * nf, 0);
+    mirror_planes_.assign(nf, 0);
+    for(std::size_t h = 0; h < edge_planes_.size(); ++h)
+      edge_planes_[h] = mesh_.vertex_planes[mesh_.source(h)] & mesh_.vertex_planes[mesh_.target(h)];
+    for(std::size_t f = 0; f < nf; ++f)
+      for(std::size_t j = 0; j < plane_count_; ++j)
+        if(mirror_face(f, j) != none) mirror_planes_[f] |= std::uint64_t(1) << j;
+  }
+
+  // Face data of face f in the frame of transform i.
+  Eigen::Vector3d frame_normal(std::size_t f, std::size_t i) const
+  {
+    return i == 0 ? mesh_.normal[f] : reflect_vector(settings_.planes[i - 1], mesh_.normal[f]);
+  }
+  Eigen::Vector3d frame_centroid(std::size_t f, std::size_t i) const
+  {
+    return i == 0 ? mesh_.centroid[f] : settings_.planes[i - 1].reflect(mesh_.centroid[f]);
+  }
+
+  void update_patch_planes(std::size_t p)
+  {
+    for(std::size_t i = 0; i < transform_count_; ++i) {
+      Patch_plane& plane = patch_plane_[p * transform_count_ + i];
+      plane.normal = i == 0 ? proxies_[p].normal : reflect_vector(settings_.planes[i - 1], proxies_[p].normal);
+      plane.center = i == 0 ? proxies_[p].center : settings_.planes[i - 1].reflect(proxies_[p].center);
+    }
+  }
+
+  void resize_labels()
+  {
+    patch_plane_.resize(proxies_.size() * transform_count_);
+    patch_area_.resize(proxies_.size() * transform_count_, 0.);
+    closed_.resize(proxies_.size() * transform_count_, 0);
+    for(std::size_t p = 0; p < proxies_.size(); ++p) update_patch_planes(p);
+  }
+
+  bool can_join(std::size_t f, std::size_t label) const
+  {
+    if(closed_[label]) return false;
+    return patch_face_count_[label] == 0 || next_to(f, label);
+  }
+
+  // Face f joins the patch `label`, and the mirrors that fit about as well join theirs at once.
+  void assign(std::size_t f, std::size_t label)
+  {
+    joins_.clear();
+    joins_.push_back({0., std::uint32_t(f), std::uint32_t(label)});
+    while(!joins_.empty()) {
+      const Candidate c = joins_.back();
+      joins_.pop_back();
+      if(label_[c.face] != none) continue;
+      label_[c.face] = c.label;
+      ++patch_face_count_[c.label];
+      queue_neighbours(c.face, c.label);
+      offer_mirrors(c.face, c.label);
+    }
+  }
+
+  // The free neighbours of face g, queued for g's patch.
+  void queue_neighbours(std::size_t g, std::size_t l)
+  {
+    const std::size_t i = l % transform_count_;
+    for(int h = 0; h < 3; ++h) {
+      const std::size_t n = neighbor_[3 * g + h];
+      if(n == none || label_[n] != none) continue;
+      // A patch of the identity or of plane j does not cross plane j where the face has a mirror.
+      if(edge_planes_[3 * g + h] & mirror_planes_[g] & (i == 0 ? ~std::uint64_t(0) : std::uint64_t(1) << (i - 1)))
+        continue;
+      // An entry that cannot beat one already queued for the face is left out (every queued
+      // entry succeeds if its face is still free when popped: patches only grow).
+      const double en = error(n, l);
+      if(en > best_queued_error_[n]) continue;
+      best_queued_error_[n] = en;
+      queue_.push({en, std::uint32_t(n), std::uint32_t(l)});
+    }
+  }
+
+  // The free mirrors of face g offered to the mirrored patches of g's patch (reflections of the
+  // identity patch, and back to it): joined at once if they fit about as well, else queued.
+  void offer_mirrors(std::size_t g, std::size_t l)
+  {
+    const std::size_t p = l / transform_count_, i = l % transform_count_;
+    double e = -1.;
+    for(std::size_t j = 0; j < plane_count_; ++j) {
+      if(i != 0 && i != j + 1) continue;
+      const std::size_t mf = mirror_face(g, j);
+      if(mf == none || label_[mf] != none) continue;
+      const std::size_t ml = p * transform_count_ + (i == 0 ? j + 1 : 0);
+      // Not next to its patch yet: it will be offered again when a face next to it is mirrored there.
+      if(!can_join(mf, ml)) continue;
+      const double me = error(mf, ml);
+      if(e < 0.) e = error(g, l);
+      if(fits_about_as_well(mf, me, e))
+        joins_.push_back({me, std::uint32_t(mf), std::uint32_t(ml)});
+      else if(me <= best_queued_error_[mf]) {
+        best_queued_error_[mf] = me;
+        queue_.push({me, std::uint32_t(mf), std::uint32_t(ml)});
+      }
+    }
+  }
+
+  void flood()
+  {
+    while(!queue_.empty()) {
+      const Candidate c = queue_.top();
+      queue_.pop();
+      if(label_[c.face] == none && can_join(c.face, c.label)) assign(c.face, c.label);
+    }
+  }
+
+  // The partition step: every face to a patch, flooding from the proxies' seeds.
+  void flood_from_seeds()
+  {
+    const std::size_t nf = mesh_.number_of_faces();
+    label_.assign(nf, none);
+    best_queued_error_.assign(nf, std::numeric_limits<double>::infinity());
+    patch_face_count_.assign(proxies_.size() * transform_count_, 0);
+    for(const Proxy& p : proxies_)
+      if(p.seed != none && label_[p.seed] == none) assign(p.seed, p.seed_label);
+    flood();
+    // Faces no seed reached (a component whose seeds were taken by mirrors): proxies left
+    // without a face are seeded there first, then the rest join a neighbouring patch.
+    std::size_t next = 0;
+    for(std::size_t p = 0; p < proxies_.size(); ++p) {
+      bool empty = true;
+      for(std::size_t i = 0; i < transform_count_ && empty; ++i) empty = patch_face_count_[p * transform_count_ + i] == 0;
+      if(!empty) continue;
+      while(next < nf && label_[next] != none) ++next;
+      if(next == nf) break;
+      proxies_[p].normal = mesh_.normal[next].squaredNorm() > 0. ? mesh_.normal[next] : Eigen::Vector3d::UnitZ();
+      proxies_[p].center = mesh_.centroid[next];
+      update_patch_planes(p);
+      assign(next, p * transform_count_);
+      flood();
+    }
+    join_neighbouring_patches();
+  }
+
+  // The moments of each proxy over its faces, each moved back by its patch's transform, and
+  // the proxy's plane from them; errors and seeds reset.
+  void fit_planes()
+  {
+    for(Proxy& p : proxies_) {
+      p.area = p.squares = 0.;
+      p.normals = p.centers = Eigen::Vector3d::Zero();
+    }
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f) {
+      Proxy& p = proxies_[label_[f] / transform_count_];
+      const std::size_t i = label_[f] % transform_count_;
+      const double a = mesh_.area[f];
+      const Eigen::Vector3d c = frame_centroid(f, i);
+      p.area += a;
+      p.normals += a * frame_normal(f, i);
+      p.centers += a * c;
+      p.squares += a * c.squaredNorm();
+    }
+    for(std::size_t q = 0; q < proxies_.size(); ++q) {
+      Proxy& p = proxies_[q];
+      if(p.normals.squaredNorm() > 0.) p.normal = p.normals.normalized();
+      if(p.area > 0.) p.center = p.centers / p.area;
+      p.error = 0.;
+      p.seed = none;
+      update_patch_planes(q);
+    }
+  }
+
+  // Patch teleportation: a patch under `closed_patch_fraction` of its proxy's largest is closed
+  // (the seed's patch excepted).
+  void close_small_patches()
+  {
+    for(std::size_t q = 0; q < proxies_.size(); ++q) {
+      double largest = 0.;
+      for(std::size_t i = 0; i < transform_count_; ++i) largest = (std::max)(largest, patch_area_[q * transform_count_ + i]);
+      for(std::size_t i = 0; i < transform_count_; ++i) {
+        const std::size_t l = q * transform_count_ + i;
+        closed_[l] = patch_area_[l] > 0. && patch_area_[l] < closed_patch_fraction * largest && l != proxies_[q].seed_label;
+      }
+    }
+  }
+
+  // Optimal error of the moments of a set of faces (in the identity frame).
+  double moment_error(double area, const Eigen::Vector3d& normals, const Eigen::Vector3d& centers, double squares) const
+  {
+    if(!(area > 0.)) return 0.;
+    return normal_weight_ * (2. * area - 2. * normals.norm()) + position_weight_ * (squares - centers.squaredNorm() / area);
+  }
+
+  struct Merge
+  {
+    std::size_t first, second;
+    double cost;
+  };
+
+  // The adjacent pair of proxies (neither the worst) whose merge increases the error least.
+  Merge cheapest_merge(std::size_t worst) const
+  {
+    Merge best{none, none, 0.};
+    for(std::size_t f = 0; f < mesh_.number_of_faces(); ++f)
+      for(int h = 0; h < 3; ++h) {
+        const std::size_t n = mesh_.neighbor(3 * f + h);
+        if(n == none) continue;
+        const std::size_t p = label_[f] / transform_count_, q = label_[n] / transform_count_;
+        if(p >= q || p == worst || q == worst) continue;
+        const Proxy &x = proxies_[p], &y = proxies_[q];
+        const double change =
+          moment_error(x.area + y.area, x.normals + y.normals, x.centers + y.centers, x.squares + y.squares) -
+          moment_error(x.area, x.normals, x.centers, x.squares) - moment_error(y.area, y.normals, y.centers, y.squares);
+        if(best.first == none || change < best.cost) best = {p, q, change};
+      }
+    return best;
+  }
+
+  const Remeshing_mesh& mesh_;
+  const Remeshing_settings& settings_;
+  const std::vector<std::size_t>& mirror_;
+  const std::size_t plane_count_, transform_count_;
+  double normal_weight_ = 1., position_weight_ = 0.; // of the metric: 1 - alpha, alpha / A_avg
+  std::vector<Proxy> proxies_;
+  std::vector<std::size_t> label_, patch_face_count_; // per face its patch; per patch its number of faces
+  std::vector<Patch_plane> patch_plane_;
+  std::vector<double> patch_area_;
+  std::vector<char> closed_; // per patch: closed by patch teleportation
+  std::vector<Face_data> face_data_;
+  std::vector<std::size_t> neighbor_; // mesh_.neighbor(h), copied for the speed of the flooding
   std::vector<std::uint64_t> edge_planes_, mirror_planes_;
-  std::vector<double> patch_area_, best_;
-  std::vector<char> disabled_;
-  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap_;
-  std::vector<Candidate> stack_;
+  std::vector<double> best_queued_error_; // per face: the least error it is queued with
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue_;
+  std::vector<Candidate> joins_; // mirrors joining at once
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_PARTITION_H

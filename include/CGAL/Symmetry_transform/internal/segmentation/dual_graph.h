@@ -5,16 +5,17 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_DUAL_GRAPH_H
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_DUAL_GRAPH_H
 
-// The faces of a mesh as indices 0..n-1 (in the order of faces(tm)), their geometry in double
+// The faces of a mesh as indices 0..n-1 (those of its face index map), their geometry in double
 // precision, and the dual graph of the segmentation: one edge per pair of faces sharing a mesh
 // edge, with its length and the Katz-Tal angular distance of the two faces. Connected parts of
-// sets of faces, and a set of faces copied into a mesh of its own (a segment's sub-mesh).
+// sets of faces, and the triangles of a set of faces (what a segment's detection reads).
 
-#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <Eigen/Dense>
 
@@ -22,12 +23,11 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <iterator>
 #include <numeric>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Katz and Tal weigh convex creases less than concave ones: a part boundary tends to run along
 // a concave crease. Here convex creases do not count at all: the cost of a normalised angular
@@ -59,31 +59,22 @@ inline Eigen::Vector3d unit_normal_of(const std::array<Eigen::Vector3d, 3>& t)
   return l > 0. ? Eigen::Vector3d(n / l) : Eigen::Vector3d::Zero();
 }
 
-// Reads the mesh (the checks of triangles_of_mesh() having been done by the caller).
-template <typename TriangleMesh, typename VertexPointMap>
-Segmentation_mesh segmentation_mesh(const TriangleMesh& tm, const VertexPointMap& vpm)
+// Adds the dual edges of the mesh, one per pair of faces sharing an edge, in the order of faces(tm)
+// and of their halfedges.
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
+void add_dual_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& face_index,
+                    Segmentation_mesh& mesh)
 {
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
-  Segmentation_mesh mesh;
-  std::map<face_descriptor, std::size_t> index;
-  for(face_descriptor f : faces(tm)) {
-    index.emplace(f, mesh.triangles.size());
-    const auto h = halfedge(f, tm);
-    mesh.triangles.push_back({to_eigen(to_dpoint(get(vpm, source(h, tm)))), to_eigen(to_dpoint(get(vpm, target(h, tm)))),
-                              to_eigen(to_dpoint(get(vpm, target(next(h, tm), tm))))});
-    const auto& t = mesh.triangles.back();
-    mesh.areas.push_back(0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm());
-  }
-  mesh.face_edges.resize(mesh.triangles.size());
-  for(face_descriptor f : faces(tm)) {
-    const std::size_t i = index[f];
+  auto point = [&](typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) { return to_eigen(to_dpoint(get(vpm, v))); };
+  for(auto f : faces(tm)) {
+    const std::size_t i = std::size_t(get(face_index, f));
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       const auto g = face(opposite(h, tm), tm);
       if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
-      const std::size_t j = index[g];
+      const std::size_t j = std::size_t(get(face_index, g));
       if(j <= i) continue; // each pair once (j == i cannot happen in a valid halfedge graph)
-      const Eigen::Vector3d a = to_eigen(to_dpoint(get(vpm, source(h, tm)))), b = to_eigen(to_dpoint(get(vpm, target(h, tm))));
-      const Eigen::Vector3d d = to_eigen(to_dpoint(get(vpm, target(next(opposite(h, tm), tm), tm))));
+      const Eigen::Vector3d a = point(source(h, tm)), b = point(target(h, tm));
+      const Eigen::Vector3d d = point(target(next(opposite(h, tm), tm), tm));
       const Eigen::Vector3d n1 = unit_normal_of(mesh.triangles[i]), n2 = unit_normal_of(mesh.triangles[j]);
       // Concave when the far vertex of the second face lies above the first face's plane.
       const bool concave = n1.dot(d - a) > 0.;
@@ -93,6 +84,57 @@ Segmentation_mesh segmentation_mesh(const TriangleMesh& tm, const VertexPointMap
       mesh.edges.push_back({i, j, (b - a).norm(), distance});
     }
   }
+}
+
+inline double area_of(const std::array<Eigen::Vector3d, 3>& t) { return 0.5 * (t[1] - t[0]).cross(t[2] - t[0]).norm(); }
+
+template <typename TriangleMesh>
+std::size_t number_of_faces(const TriangleMesh& tm)
+{
+  return std::size_t(std::distance(faces(tm).begin(), faces(tm).end()));
+}
+
+// Whether `face_index` numbers the faces 0 to n - 1, each once: CGAL's initialized index maps do,
+// except on a Surface_mesh with removed faces not yet collected (its indices then have gaps).
+template <typename TriangleMesh, typename FaceIndexMap>
+bool numbers_the_faces(const TriangleMesh& tm, const FaceIndexMap& face_index)
+{
+  std::vector<bool> seen(number_of_faces(tm), false);
+  for(auto f : faces(tm)) {
+    const std::size_t i = std::size_t(get(face_index, f));
+    if(i >= seen.size() || seen[i]) return false;
+    seen[i] = true;
+  }
+  return true;
+}
+
+// The faces numbered in the order of faces(tm), in a dynamic property map of the mesh.
+template <typename TriangleMesh>
+auto face_index_in_order(const TriangleMesh& tm)
+{
+  auto face_index = get(CGAL::dynamic_face_property_t<std::size_t>(), tm);
+  std::size_t i = 0;
+  for(auto f : faces(tm)) put(face_index, f, i++);
+  return face_index;
+}
+
+// Reads the mesh, its faces numbered 0 to n - 1 by `face_index` (the checks of
+// triangles_of_mesh() having been done by the caller).
+template <typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap>
+Segmentation_mesh segmentation_mesh(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& face_index)
+{
+  Segmentation_mesh mesh;
+  const std::size_t n = number_of_faces(tm);
+  mesh.triangles.resize(n);
+  mesh.areas.resize(n);
+  mesh.face_edges.resize(n);
+  for(auto f : faces(tm)) {
+    const std::size_t i = std::size_t(get(face_index, f));
+    const Dtriangle t = triangle_of_face(halfedge(f, tm), tm, vpm);
+    mesh.triangles[i] = {to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2])};
+    mesh.areas[i] = area_of(mesh.triangles[i]);
+  }
+  add_dual_edges(tm, vpm, face_index, mesh);
   return mesh;
 }
 
@@ -185,8 +227,6 @@ inline std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, 
   return triangles;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_DUAL_GRAPH_H

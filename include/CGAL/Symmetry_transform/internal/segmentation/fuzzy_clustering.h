@@ -26,9 +26,22 @@
 #include <limits>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
+
+// k-means++ starts of the 2-means, the best of which is kept: one start can settle on a poor
+// local minimum, five rarely all do.
+constexpr int clustering_starts = 5;
+// A bound on the iterations of k-means and of fuzzy c-means, which converge in far fewer: it only
+// guards against a cycle of rounding.
+constexpr int max_clustering_iterations = 100;
+// Fuzzy c-means stops when its centres (features in [0, 1]) move less than this.
+constexpr double center_convergence = 1e-7;
+// The least membership of a face in a label, as CGAL's SDF segmentation: every face may take
+// every label, at a price.
+constexpr double least_membership = 5e-6;
+// Added to every data cost of the graph cut: max-flow rejects zero capacities to the source or
+// the sink (CGAL's SDF segmentation keeps them above machine epsilon for the same reason).
+constexpr double least_label_cost = 1e-12;
 
 // Rows of `x`: the feature vectors; `weights`: the faces' areas.
 struct Fuzzy_two_clusters
@@ -58,7 +71,7 @@ inline double two_means(const Eigen::MatrixXd& x, const std::vector<double>& wei
   centers.row(1) = x.row(draw(w));
   std::vector<int> label(std::size_t(n), -1);
   double inertia = 0.;
-  for(int iteration = 0; iteration < 100; ++iteration) {
+  for(int iteration = 0; iteration < max_clustering_iterations; ++iteration) {
     bool changed = false;
     inertia = 0.;
     for(Eigen::Index i = 0; i < n; ++i) {
@@ -84,7 +97,7 @@ inline double two_means(const Eigen::MatrixXd& x, const std::vector<double>& wei
 // The fuzzy 2-clustering of the rows of `x`: the best of `starts` k-means runs (lowest inertia,
 // the first on ties), refined by fuzzy c-means (fuzzifier 2). Deterministic for a seed.
 inline Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std::vector<double>& weights,
-                                             unsigned seed, int starts = 5)
+                                             unsigned seed, int starts = clustering_starts)
 {
   CGAL::Random random(seed);
   Fuzzy_two_clusters result;
@@ -99,7 +112,7 @@ inline Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std
   }
   const Eigen::Index n = x.rows();
   result.membership.resize(n, 2);
-  for(int iteration = 0; iteration < 100; ++iteration) {
+  for(int iteration = 0; iteration < max_clustering_iterations; ++iteration) {
     for(Eigen::Index i = 0; i < n; ++i) {
       const double d0 = (x.row(i) - result.centers.row(0)).squaredNorm(),
                    d1 = (x.row(i) - result.centers.row(1)).squaredNorm();
@@ -120,7 +133,7 @@ inline Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std
     }
     const double moved = (centers - result.centers).norm();
     result.centers = centers;
-    if(moved < 1e-7) break;
+    if(moved < center_convergence) break;
   }
   return result;
 }
@@ -166,11 +179,11 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
     mean_distance /= double(inner.size());
   }
   Graph graph;
-  constexpr double floor = 5e-6; // every face may take every label, at a price
   for(std::size_t i = 0; i < faces.size(); ++i) {
     const double scale = mean_area > 0. ? mesh.areas[faces[i]] / mean_area : 1.;
     Graph_cut_face node;
-    for(int c = 0; c < 2; ++c) node.cost.push_back(scale * -std::log((std::max)(membership(Eigen::Index(i), c), floor)) + 1e-12);
+    for(int c = 0; c < 2; ++c)
+      node.cost.push_back(scale * -std::log((std::max)(membership(Eigen::Index(i), c), least_membership)) + least_label_cost);
     node.label = membership(Eigen::Index(i), 1) > membership(Eigen::Index(i), 0) ? 1 : 0;
     boost::add_vertex(node, graph);
   }
@@ -190,8 +203,6 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
   return labels;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_FUZZY_CLUSTERING_H

@@ -10,11 +10,16 @@
 // fuzzy clustering and graph cut, and the connected parts of the labels. Segments of one level
 // are split in parallel.
 
-#include <CGAL/Symmetry_transform/internal/common/defaults.h>
-#include <CGAL/Symmetry_transform/internal/segmentation/fuzzy_clustering.h>
+#include <CGAL/Symmetry_transform/Principal_symmetry.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/detection/detection.h>
+#include <CGAL/Symmetry_transform/internal/detection/face_support.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
-#include <CGAL/Symmetry_transform/principal_symmetries.h>
-#include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/fuzzy_clustering.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/settings.h>
+
+#include <Eigen/Dense>
 
 #include <array>
 #include <chrono>
@@ -23,103 +28,7 @@
 #include <limits>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
-
-// A segment reflected by none of its planes over more than this fraction of its area, or by all
-// of them over more than its complement, is not split (thesis, section 5.2.2).
-constexpr double least_partial_fraction = 0.1;
-// The Gaussian width of the feature vectors, relative to the detection's (see split_segment()).
-constexpr double feature_width_factor = 0.5;
-// Parts of a split smaller than this fraction of the segment are merged into a neighbour.
-constexpr double least_part_fraction = 0.05;
-
-// The detection settings of segment_by_symmetry(): those of detect_principal_symmetries() with
-// defaults fitted to segmentation.
-struct Segmentation_settings
-{
-  long grid_resolution;
-  double gaussian_width;
-  std::size_t number_of_samples;
-  std::size_t number_of_refinement_samples;
-  unsigned number_of_iterations;
-  std::size_t max_number_of_planes;
-  double symmetry_threshold;
-  double laplacian_threshold;
-  Reflective_symmetry_method method;
-  Monte_carlo_estimator estimator;
-  unsigned seed;
-  unsigned threads;
-};
-
-template <typename NamedParameters>
-Segmentation_settings segmentation_settings(const NamedParameters& np)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  Segmentation_settings s;
-  s.grid_resolution = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), defaults::segmentation_grid_resolution));
-  s.gaussian_width = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), defaults::gaussian_width));
-  s.number_of_samples = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), defaults::segmentation_monte_carlo_pairs));
-  s.number_of_refinement_samples =
-    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), defaults::segmentation_refinement_samples));
-  s.number_of_iterations = unsigned(choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::isp_iterations));
-  s.max_number_of_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), defaults::segmentation_max_number_of_planes));
-  s.symmetry_threshold = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), defaults::symmetry_threshold));
-  s.laplacian_threshold = double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), defaults::laplacian_threshold));
-  s.method = choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
-  s.estimator =
-    choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
-  s.seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), defaults::random_seed));
-  s.threads = (std::max)(1u, unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
-                                                      default_number_of_threads())));
-  if(s.max_number_of_planes == 0)
-    throw std::invalid_argument("segment_by_symmetry: max_number_of_planes must be positive");
-  return s;
-}
-
-// Refinement samples and Monte Carlo samples of a segment covering `fraction` of the mesh's
-// area: the density of the whole mesh's, at least these many.
-constexpr std::size_t least_refinement_samples = 1000;
-constexpr std::size_t least_monte_carlo_samples = 20000;
-
-// `count` scaled by `fraction`, at least `least` (or `count` if smaller).
-inline std::size_t samples_of_fraction(std::size_t count, double fraction, std::size_t least)
-{
-  return (std::max)((std::min)(least, count), std::size_t(std::lround(fraction * double(count))));
-}
-
-// The smallest grid of a segment below the root, if the root's is larger.
-constexpr long least_segment_resolution = 24;
-
-// The grid resolution of a segment of radius `radius` in a mesh whose largest component has the
-// radius `root_radius`: the voxels keep their size, down to least_segment_resolution (or 12
-// Gaussian widths, the smallest grid allowed), an even number.
-inline long segment_resolution(const Segmentation_settings& s, double radius, double root_radius)
-{
-  // even, as the transform requires
-  const long least = (std::min)(s.grid_resolution, (std::max)(least_segment_resolution, 2 * (long(6. * s.gaussian_width) + 1)));
-  const long scaled = 2 * long(std::lround(0.5 * double(s.grid_resolution) * radius / root_radius));
-  return (std::max)(least, (std::min)(s.grid_resolution, scaled));
-}
-
-// The named parameters of the detection on a segment's sub-mesh.
-inline auto detection_parameters(const Segmentation_settings& s, double fraction, long resolution, unsigned threads)
-{
-  return CGAL::parameters::grid_resolution(resolution)
-    .gaussian_width(s.gaussian_width)
-    .number_of_samples(samples_of_fraction(s.number_of_samples, fraction, least_monte_carlo_samples))
-    .number_of_refinement_samples(samples_of_fraction(s.number_of_refinement_samples, fraction, least_refinement_samples))
-    .number_of_iterations(s.number_of_iterations)
-    .max_number_of_planes(s.max_number_of_planes)
-    .symmetry_threshold(s.symmetry_threshold)
-    .laplacian_threshold(s.laplacian_threshold)
-    .prst_method(s.method)
-    .monte_carlo_estimator(s.estimator)
-    .random_seed(s.seed)
-    .number_of_threads(threads);
-}
+namespace CGAL::Symmetry_transform::internal {
 
 // The largest distance from the area-weighted centroid of the faces to their vertices.
 inline double radius_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
@@ -142,70 +51,103 @@ struct Split
 {
   std::vector<Principal_symmetry<Dkernel>> planes; // of the segment, strongest first
   std::vector<double> reflected_fractions;         // of each plane
-  bool partial_symmetry = false;                   // some plane reflects 10 % to 90 % of the segment
+  bool partial_symmetry = false;                   // the stopping rule: some plane reflects part of the segment
   std::vector<std::vector<std::size_t>> parts;     // the children (faces of the mesh), if split
   double seconds = 0.;                             // in all
   double detection_seconds = 0., feature_seconds = 0.; // of which the detection, the features
 };
 
-// The split of the segment made of `faces` (connected, sorted).
-inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces, double fraction,
-                           long resolution, const Segmentation_settings& settings, double lambda, unsigned threads)
+// The points of a face at which its supports are evaluated: its centroid and three interior
+// points, as symmetry_support() does.
+// Features: the support of each plane on each face (rows: the faces of `faces`), L_ij in the
+// thesis, "the average value in the GEDT of a point of face i reflected by plane j", at the
+// face_support_points() of the face. The GEDT is evaluated exactly, from the distance to the nearest
+// triangle that the detection's closest-triangle field offers, with the Gaussian width `sigma`.
+// Points reflected beyond the field's band get 0.
+inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
+                                     const std::vector<Principal_symmetry<Dkernel>>& planes,
+                                     const Closest_triangle_field& field, double sigma, unsigned threads)
 {
-  const auto start = std::chrono::steady_clock::now();
-  Split split;
-  const auto np = detection_parameters(settings, fraction, resolution, threads);
-  const Triangle_surface<Dkernel> surface(triangles_of_faces(mesh, faces), np);
-  split.planes = detection_of_surface(surface, np).symmetries;
-  auto since_start = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  split.detection_seconds = since_start();
-
-  // Features: the support of each plane on each face, L_ij in the thesis, "the average value in
-  // the GEDT of a point of face i reflected by plane j", at the centroid and three interior
-  // points of the face (as symmetry_support()). The GEDT is evaluated exactly, from the distance
-  // to the nearest triangle that the detection's closest-triangle field offers, with half the
-  // detection's Gaussian width: supports closer to 0 or 1 (a face is mirrored or it is not)
-  // cluster more cleanly. Points reflected beyond the field's band get 0.
-  const double sigma = feature_width_factor * isp_settings(np, surface.gedt).sigma;
   const double inverse_two_sigma2 = 1. / (2. * sigma * sigma);
-  std::vector<double> weights(faces.size());
   std::vector<std::array<Eigen::Vector3d, 4>> points(faces.size());
-  double area = 0.;
   for(std::size_t i = 0; i < faces.size(); ++i) {
-    const auto& t = mesh.triangles[faces[i]];
-    weights[i] = mesh.areas[faces[i]];
-    points[i] = {(t[0] + t[1] + t[2]) / 3., (4. * t[0] + t[1] + t[2]) / 6., (t[0] + 4. * t[1] + t[2]) / 6.,
-                 (t[0] + t[1] + 4. * t[2]) / 6.};
-    area += weights[i];
+    const std::array<Eigen::Vector3d, 3>& t = mesh.triangles[faces[i]];
+    points[i] = face_support_points(t[0], t[1], t[2]);
   }
-  Eigen::MatrixXd features = Eigen::MatrixXd::Zero(Eigen::Index(faces.size()), Eigen::Index(split.planes.size()));
-  for(std::size_t j = 0; j < split.planes.size(); ++j) {
-    const Dplane mirror = to_dplane(split.planes[j].plane);
+  Eigen::MatrixXd features = Eigen::MatrixXd::Zero(Eigen::Index(faces.size()), Eigen::Index(planes.size()));
+  for(std::size_t j = 0; j < planes.size(); ++j) {
+    const Dplane mirror = to_dplane(planes[j].plane);
     parallel_for(faces.size(), threads, [&](unsigned, std::size_t begin, std::size_t end) {
       for(std::size_t i = begin; i < end; ++i) {
         double sum = 0.;
         for(const Eigen::Vector3d& p : points[i]) {
           const Eigen::Vector3d q = mirror.reflect(p);
-          const auto [on_surface, triangle] = surface.field.nearest_in_cell(q);
+          const auto [on_surface, triangle] = field.nearest_in_cell(q);
           if(triangle >= 0) sum += std::exp(-(q - on_surface).squaredNorm() * inverse_two_sigma2);
         }
-        features(Eigen::Index(i), Eigen::Index(j)) = sum / 4.;
+        features(Eigen::Index(i), Eigen::Index(j)) = sum / double(points[i].size());
       }
     });
+  }
+  return features;
+}
+
+// The fraction of the segment's area that each plane reflects onto it (the area-weighted mean of
+// its column of supports; `area`: the sum of `areas`); sets split.partial_symmetry by the stopping rule.
+inline void record_reflected_fractions(const Eigen::MatrixXd& features, const std::vector<double>& areas, double area,
+                                       Split& split)
+{
+  for(Eigen::Index j = 0; j < features.cols(); ++j) {
     double supported = 0.;
-    for(std::size_t i = 0; i < faces.size(); ++i) supported += weights[i] * features(Eigen::Index(i), Eigen::Index(j));
+    for(std::size_t i = 0; i < areas.size(); ++i) supported += areas[i] * features(Eigen::Index(i), j);
     const double fraction = supported / area;
     split.reflected_fractions.push_back(fraction);
     if(fraction >= least_partial_fraction && fraction <= 1. - least_partial_fraction) split.partial_symmetry = true;
   }
+}
+
+// The connected parts of the two labels of the clustering and graph cut of the features, the
+// parts smaller than least_part_fraction of the segment merged into their neighbours.
+inline std::vector<std::vector<std::size_t>> parts_of_clustering(const Segmentation_mesh& mesh,
+                                                                 const std::vector<std::size_t>& faces,
+                                                                 const Eigen::MatrixXd& features,
+                                                                 const std::vector<double>& areas, double area,
+                                                                 const Segmentation_settings& settings)
+{
+  const Fuzzy_two_clusters clusters = fuzzy_two_clusters(features, areas, settings.seed);
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> local(mesh.number_of_faces(), none);
+  for(std::size_t i = 0; i < faces.size(); ++i) local[faces[i]] = i;
+  const std::vector<std::size_t> labels = graph_cut_labels(mesh, faces, local, clusters.membership, settings.lambda);
+  return merge_small_parts(mesh, connected_parts(mesh, faces, local, labels), least_part_fraction * area);
+}
+
+// The split of the segment made of `faces` (connected, sorted), covering `fraction` of the mesh.
+inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces, double fraction,
+                           long resolution, const Segmentation_settings& settings, unsigned threads)
+{
+  const auto start = std::chrono::steady_clock::now();
+  auto since_start = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  Split split;
+  const auto np = detection_parameters(settings, fraction, resolution, threads);
+  const Triangle_surface<Dkernel> surface(triangles_of_faces(mesh, faces), np);
+  split.planes = detection_of_surface(surface, np).symmetries;
+  split.detection_seconds = since_start();
+
+  // Half the detection's Gaussian width: supports closer to 0 or 1 (a face is mirrored or it is
+  // not) cluster more cleanly.
+  const double sigma = feature_width_factor * isp_settings(np, surface.gedt).sigma;
+  const Eigen::MatrixXd features = face_supports(mesh, faces, split.planes, surface.field, sigma, threads);
+  std::vector<double> areas(faces.size());
+  double area = 0.;
+  for(std::size_t i = 0; i < faces.size(); ++i) {
+    areas[i] = mesh.areas[faces[i]];
+    area += areas[i];
+  }
+  record_reflected_fractions(features, areas, area, split);
   split.feature_seconds = since_start() - split.detection_seconds;
   if(split.partial_symmetry) {
-    const Fuzzy_two_clusters clusters = fuzzy_two_clusters(features, weights, settings.seed);
-    const std::size_t none = std::size_t(-1);
-    std::vector<std::size_t> local(mesh.number_of_faces(), none);
-    for(std::size_t i = 0; i < faces.size(); ++i) local[faces[i]] = i;
-    const std::vector<std::size_t> labels = graph_cut_labels(mesh, faces, local, clusters.membership, lambda);
-    split.parts = merge_small_parts(mesh, connected_parts(mesh, faces, local, labels), least_part_fraction * area);
+    split.parts = parts_of_clustering(mesh, faces, features, areas, area, settings);
     if(split.parts.size() < 2) split.parts.clear();
   }
   split.seconds = since_start();
@@ -218,7 +160,7 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
 inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
                                          const std::vector<std::vector<std::size_t>>& faces_of,
                                          const std::vector<std::size_t>& examined,
-                                         const Segmentation_settings& settings, double lambda, double total_area,
+                                         const Segmentation_settings& settings, double total_area,
                                          double root_radius)
 {
   std::vector<Split> splits(examined.size());
@@ -232,7 +174,7 @@ inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
       double area = 0.;
       for(std::size_t f : faces_of[examined[k]]) area += mesh.areas[f];
       const long resolution = segment_resolution(settings, radius_of(mesh, faces_of[examined[k]]), root_radius);
-      splits[k] = split_segment(mesh, faces_of[examined[k]], area / total_area, resolution, settings, lambda, inner);
+      splits[k] = split_segment(mesh, faces_of[examined[k]], area / total_area, resolution, settings, inner);
     }
   });
   return splits;
@@ -257,8 +199,6 @@ inline std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_me
   return parts;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SPLIT_H
