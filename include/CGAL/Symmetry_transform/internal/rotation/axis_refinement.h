@@ -39,13 +39,11 @@ struct Axis_fit_sums
   double support = 0.;         // weights at sigma itself
   double narrower_weight = 0.; // weights at half the width of the fit, w^4
 
-  void add(const Axis_fit_sums& o)
+  Axis_fit_sums& operator+=(const Axis_fit_sums& o)
   {
-    jtj += o.jtj;
-    jtr += o.jtr;
-    weight += o.weight;
-    support += o.support;
-    narrower_weight += o.narrower_weight;
+    jtj += o.jtj, jtr += o.jtr;
+    weight += o.weight, support += o.support, narrower_weight += o.narrower_weight;
+    return *this;
   }
 };
 
@@ -75,6 +73,10 @@ inline Rotated_sample rotated_sample(const Eigen::Vector3d& x, const Daxis& axis
   return r;
 }
 
+// A thread for every 2500 samples at least: starting a thread costs as much as matching a few
+// hundred samples, and far more on a busy machine.
+constexpr std::size_t min_samples_per_thread = 2500;
+
 // The sums of the fit with weights of width `width` sigma. Each sample is rotated by one of
 // `angles`, in turn by runs of 64 consecutive samples (close to each other along the Hilbert
 // curve, so that the match of one starts the search of the next); `hints` holds one match per
@@ -82,7 +84,7 @@ inline Rotated_sample rotated_sample(const Eigen::Vector3d& x, const Daxis& axis
 template <typename Matcher>
 Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const Daxis& axis,
                             const std::vector<double>& angles, const Matcher& matcher, const Isp_settings& settings,
-                            double width, Match_hints<typename Matcher::Hint>& hints)
+                            double width, std::vector<typename Matcher::Hint>& hints)
 {
   constexpr std::size_t chunk = 64;
   const double sigma = width * settings.sigma;
@@ -99,9 +101,8 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
     const std::size_t a = (i / chunk) % angles.size();
     const Rotated_sample r = rotated_sample(samples[i], axis, rotations[a], cosines[a], sines[a], t1, t2, settings.radius);
     if(settings.beyond_band && settings.beyond_band(r.image)) return;
-    if(!hints.has_hint[i] && previous != none) hints.hints[i] = hints.hints[previous];
-    const auto match = matcher.closest(r.image, hints.hints[i], hints.has_hint[i] != 0 || previous != none);
-    hints.has_hint[i] = 1;
+    if(!hints[i].valid && previous != none) hints[i] = hints[previous];
+    const Match match = matcher.closest(r.image, hints[i]);
     previous = i;
     const double d2 = (r.image - match.first).squaredNorm();
     sums.support += std::exp(-d2 / (2. * settings.sigma * settings.sigma));
@@ -115,7 +116,8 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
   };
   // As ISP: fixed round-robin chunks per thread, so that the sums are reproducible.
   const std::size_t chunks = (n + chunk - 1) / chunk;
-  const unsigned threads = unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), chunks)));
+  const unsigned threads =
+    unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), n / min_samples_per_thread)));
   std::vector<Axis_fit_sums> partial(threads);
   parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
     std::size_t previous = none;
@@ -123,7 +125,7 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
       for(std::size_t i = c * chunk; i < (std::min)((c + 1) * chunk, n); ++i) add_sample(i, partial[thread], previous);
   });
   Axis_fit_sums total;
-  for(const Axis_fit_sums& s : partial) total.add(s);
+  for(const Axis_fit_sums& s : partial) total += s;
   return total;
 }
 
@@ -150,6 +152,9 @@ struct Axis_refinement
   bool abandoned = false;
 };
 
+// The exact end of a refinement reads one sample in this many.
+constexpr std::size_t polish_stride = 4;
+
 // Whether to give up the refinement of an axis (heading for one already found).
 typedef std::function<bool(const Daxis&)> Axis_abandon;
 
@@ -163,7 +168,7 @@ typedef std::function<bool(const Daxis&)> Axis_abandon;
 template <typename Matcher>
 Axis_fit_sums gauss_newton(const std::vector<Eigen::Vector3d>& samples, const std::vector<double>& angles,
                            const Matcher& matcher, const Isp_settings& settings, const Eigen::Vector3d& center,
-                           double width, Axis_fit_sums sums, Match_hints<typename Matcher::Hint>& hints,
+                           double width, Axis_fit_sums sums, std::vector<typename Matcher::Hint>& hints,
                            Axis_refinement& result, unsigned max_steps, const Axis_abandon& abandon)
 {
   double factor = 1.;
@@ -196,7 +201,8 @@ Axis_fit_sums gauss_newton(const std::vector<Eigen::Vector3d>& samples, const st
 // of the samples at twice the width (a wider basin for a start from the coarse stage), then on
 // all of them at sigma, narrowed to sigma / 2 and sigma / 4 while the matches are much closer
 // than the width (the mean weight at half the width above 85 % of it, as ISP: an exact
-// symmetry), all walking with `walk_matcher`; then up to four steps with the exact `matcher`.
+// symmetry), all walking with `walk_matcher`; then up to four steps with the exact `matcher`, on
+// a fourth of the samples.
 // `abandon` may stop it (an axis heading for one already found).
 template <typename Matcher, typename Walk_matcher>
 Axis_refinement refine_axis(const std::vector<Eigen::Vector3d>& samples, const Daxis& start,
@@ -205,17 +211,17 @@ Axis_refinement refine_axis(const std::vector<Eigen::Vector3d>& samples, const D
 {
   Axis_refinement result{start};
   const std::vector<Eigen::Vector3d> coarse(samples.begin(), samples.begin() + std::ptrdiff_t(samples.size() / 8));
-  auto climb = [&](const std::vector<Eigen::Vector3d>& x, double width, Match_hints<typename Walk_matcher::Hint>& h) {
+  auto climb = [&](const std::vector<Eigen::Vector3d>& x, double width, std::vector<typename Walk_matcher::Hint>& h) {
     return gauss_newton(x, angles, walk_matcher, settings, center, width,
                         axis_fit_sums(x, result.axis, angles, walk_matcher, settings, width, h), h, result,
                         settings.max_iterations, abandon);
   };
   if(coarse.size() >= 100) {
-    Match_hints<typename Walk_matcher::Hint> coarse_hints(coarse.size());
+    std::vector<typename Walk_matcher::Hint> coarse_hints(coarse.size());
     climb(coarse, 2., coarse_hints);
     if(result.abandoned) return result;
   }
-  Match_hints<typename Walk_matcher::Hint> hints(samples.size());
+  std::vector<typename Walk_matcher::Hint> hints(samples.size());
   Axis_fit_sums last = climb(samples, 1., hints);
   for(const double narrower : {0.5, 0.25}) {
     if(result.abandoned || last.narrower_weight < 0.85 * last.weight) break;
@@ -223,18 +229,21 @@ Axis_refinement refine_axis(const std::vector<Eigen::Vector3d>& samples, const D
     last = climb(samples, narrower, hints);
   }
   if(result.abandoned) return result;
-  // The exact searches start from the walk's matches when these are hints of the exact matcher
+  // The exact end reads every fourth sample (in ISP's order, a regular stride covers the shape):
+  // on an exact symmetry any of them give the same axis, and exact searches cost up to 20 times
+  // the walk's on thin shapes, whose triangles' boxes overlap (blade.off: 0.8 s for all samples).
+  // They start from the walk's matches when these are hints of the exact matcher
   // (Closest_triangle_field): most are then one test of a leaf of the tree.
-  auto polish = [&](Match_hints<typename Matcher::Hint>& h) {
-    gauss_newton(samples, angles, matcher, settings, center, result.width,
-                 axis_fit_sums(samples, result.axis, angles, matcher, settings, result.width, h), h, result, 4, {});
-  };
-  if constexpr(std::is_same<typename Matcher::Hint, typename Walk_matcher::Hint>::value) {
-    polish(hints);
-  } else {
-    Match_hints<typename Matcher::Hint> exact_hints(samples.size());
-    polish(exact_hints);
+  std::vector<Eigen::Vector3d> subset;
+  std::vector<typename Matcher::Hint> exact_hints;
+  for(std::size_t i = 0; i < samples.size(); i += polish_stride) {
+    subset.push_back(samples[i]);
+    exact_hints.emplace_back();
+    if constexpr(std::is_same<typename Matcher::Hint, typename Walk_matcher::Hint>::value) exact_hints.back() = hints[i];
   }
+  gauss_newton(subset, angles, matcher, settings, center, result.width,
+               axis_fit_sums(subset, result.axis, angles, matcher, settings, result.width, exact_hints), exact_hints,
+               result, 4, {});
   return result;
 }
 

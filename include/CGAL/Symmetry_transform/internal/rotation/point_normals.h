@@ -11,6 +11,7 @@
 // planes of the nearest neighbours (CGAL::pca_estimate_normals); their signs do not matter.
 
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
+#include <CGAL/Symmetry_transform/internal/detection/matchers.h>
 
 #include <CGAL/pca_estimate_normals.h>
 #include <CGAL/property_map.h>
@@ -31,7 +32,11 @@ class Point_normal_matcher
 
 public:
   static constexpr bool has_normals = true;
-  struct Hint {};
+  // Nothing to start from: a Kd-tree search is cheap.
+  struct Hint
+  {
+    bool valid = false;
+  };
 
   explicit Point_normal_matcher(const std::vector<Dpoint>& points) : nearest_(points)
   {
@@ -48,8 +53,9 @@ public:
     }
   }
 
-  std::pair<Eigen::Vector3d, Eigen::Vector3d> closest(const Eigen::Vector3d& p, Hint&, bool) const
+  Match closest(const Eigen::Vector3d& p, Hint& hint) const
   {
+    hint.valid = true;
     const std::size_t i = nearest_(p).index;
     return {to_eigen(nearest_.point(i)), normals_[i]};
   }

@@ -10,11 +10,11 @@
 // matchers), prepared from the named parameters.
 
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
-#include <CGAL/Symmetry_transform/internal/rotation/defaults.h>
 #include <CGAL/Symmetry_transform/internal/rotation/point_normals.h>
 #include <CGAL/Symmetry_transform/internal/rotation/rotation_detection.h>
 
@@ -52,8 +52,10 @@ template <typename Matcher>
 std::vector<Eigen::Vector3d> normals_at(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher)
 {
   std::vector<Eigen::Vector3d> normals;
-  typename Matcher::Hint hint;
-  for(const Eigen::Vector3d& x : samples) normals.push_back(matcher.closest(x, hint, false).second);
+  for(const Eigen::Vector3d& x : samples) {
+    typename Matcher::Hint none;
+    normals.push_back(matcher.closest(x, none).second);
+  }
   return normals;
 }
 
@@ -80,9 +82,11 @@ rotations_of_points(const PointRange& points, int max_order, const NamedParamete
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits GT;
   const std::vector<Dpoint> input = points_of_range(points, NP_helper::get_const_point_map(points, np));
-  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points(points, np);
+  const Shape_frame frame = frame_of_points(input);
+  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(input, frame, grid_settings(np, frame.radius));
   const auto coarse_np = np.grid_resolution(int(coarse_resolution(np)));
-  const Voxel_grid<GT> coarse = gaussian_distance_transform_of_points(points, coarse_np);
+  const Voxel_grid<GT> coarse =
+    gaussian_distance_transform_of_points<GT>(input, frame, grid_settings(coarse_np, frame.radius));
   const Point_normal_matcher matcher(input);
   const std::vector<Eigen::Vector3d> samples = point_samples(input, np);
   const std::vector<Eigen::Vector3d> normals = normals_at(samples, matcher);
