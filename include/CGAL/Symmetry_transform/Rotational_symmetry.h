@@ -5,14 +5,15 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_ROTATIONAL_SYMMETRY_H
 #define CGAL_SYMMETRY_TRANSFORM_ROTATIONAL_SYMMETRY_H
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRotationRef
-A rotational symmetry of a shape: an axis and the order of the rotations about it that map the
-shape onto itself, refined to high precision.
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformRotationRef
+ *
+ * A rotational symmetry of a shape: an axis and the order of the rotations about it that map the
+ * shape onto itself, refined to high precision.
+ *
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 struct Rotational_symmetry
@@ -36,7 +37,6 @@ struct Rotational_symmetry
   typename GeomTraits::FT support;
 };
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_ROTATIONAL_SYMMETRY_H

@@ -6,6 +6,7 @@
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_MEASURE_H
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>
 
 #include <CGAL/number_utils.h>
 
@@ -120,31 +121,23 @@ inline double symmetry_transform_value(double symmetry_measure)
   return std::sqrt((1. + symmetry_measure) / 2.);
 }
 
-} // namespace CGAL::Symmetry_transform
-
-// Rotations (and any rigid motion): the conversion lives with the rotational symmetries.
-#include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>
-
-namespace CGAL {
-namespace Symmetry_transform {
-
 /*!
-\ingroup PkgSymmetryTransformMeasureRef
-
-Symmetry measure of a sampled function \f$ f \f$ with respect to a rotation (or any rigid
-motion) \f$ \gamma \f$, evaluated directly on the grid as in
-`symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`:
-\f$ SM(\gamma) = \sum_x f(x)\, f(\gamma(x)) / \sum_x f(x)^2 \f$, 1 when \f$ \gamma \f$
-maps \f$ f \f$ onto itself. `rotation_about_axis()` builds the rotation about an axis.
-
-\tparam GeomTraits a model of `Kernel`
-
-\param f the function
-\param rotation the rotation \f$ \gamma \f$: its linear part must be orthogonal (to \f$ 10^{-6} \f$)
-
-\returns \f$ SM(\gamma) \f$
-
-\throws std::invalid_argument if `rotation` is not a rigid motion or `f` is zero everywhere.
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * Symmetry measure of a sampled function \f$ f \f$ with respect to a rotation (or any rigid
+ * motion) \f$ \gamma \f$, evaluated directly on the grid as in
+ * `symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`:
+ * \f$ SM(\gamma) = \sum_x f(x)\, f(\gamma(x)) / \sum_x f(x)^2 \f$, 1 when \f$ \gamma \f$
+ * maps \f$ f \f$ onto itself. `rotation_about_axis()` builds the rotation about an axis.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ *
+ * \param f the function
+ * \param rotation the rotation \f$ \gamma \f$: its linear part must be orthogonal (to \f$ 10^{-6} \f$)
+ *
+ * \returns \f$ SM(\gamma) \f$
+ *
+ * \throws std::invalid_argument if `rotation` is not a rigid motion or `f` is zero everywhere.
 */
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Aff_transformation_3& rotation)
@@ -153,7 +146,6 @@ double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTrai
   return internal::symmetry_measure_of_reflection(f, [&](double* x) { motion.move(x); });
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_SYMMETRY_MEASURE_H
