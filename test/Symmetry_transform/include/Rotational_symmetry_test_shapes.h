@@ -12,7 +12,6 @@
 
 #include "Symmetry_transform_test_shapes.h"
 
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <array>
 #include <cmath>
@@ -29,23 +28,12 @@ struct Soup
   std::vector<Point_3> points;
   std::vector<std::array<std::size_t, 3>> triangles;
 
-  // The mesh, each face starting at the first corner of its triangle (Polyhedron_3 may start them
-  // elsewhere): the surface samples, drawn triangle by triangle from the first corner, are the
-  // same for every mesh type.
+  // The mesh, each face starting at the first corner of its triangle (mesh_from_triangle_soup()).
   template <typename Mesh>
   Mesh mesh() const
   {
     Mesh m;
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m);
-    std::size_t i = 0;
-    for(auto f : faces(m)) {
-      const Point_3& first = points[triangles[i++][0]];
-      for(auto h : CGAL::halfedges_around_face(halfedge(f, m), m))
-        if(get(CGAL::vertex_point, m, source(h, m)) == first) {
-          set_halfedge(f, h, m);
-          break;
-        }
-    }
+    mesh_from_triangle_soup(points, triangles, m);
     return m;
   }
 
