@@ -16,9 +16,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The line {point + s direction}, direction of unit length.
 struct Daxis
@@ -84,8 +82,6 @@ typename GT::Line_3 to_line(const Daxis& axis)
   return CGAL::Cartesian_converter<Dkernel, GT>()(l);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_AXIS_H

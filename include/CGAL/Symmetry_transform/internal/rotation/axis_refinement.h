@@ -26,9 +26,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Weighted normal equations of one fit, summed over the rotated samples.
 struct Axis_fit_sums
@@ -247,8 +245,6 @@ Axis_refinement refine_axis(const std::vector<Eigen::Vector3d>& samples, const D
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_AXIS_REFINEMENT_H

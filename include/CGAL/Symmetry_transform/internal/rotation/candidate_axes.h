@@ -27,9 +27,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // A direction (or a whole axis) with the order it was found for and how well the rotation by
 // 2 pi / order scored there.
@@ -127,8 +125,6 @@ inline std::vector<Axis_candidate> plane_pair_candidates(const std::vector<Dplan
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_CANDIDATE_AXES_H

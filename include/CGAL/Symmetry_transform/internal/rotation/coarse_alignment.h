@@ -20,9 +20,7 @@
 #include <cmath>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The angles a refinement fits at once for order k: 2 pi / k, and the largest multiple of it
 // up to pi, which moves the samples farthest and so pins the axis best (one angle for k <= 3).
@@ -173,8 +171,6 @@ Daxis pattern_search(const Gedt_overlap<GT>& overlap, Daxis axis, const std::vec
   return axis;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_COARSE_ALIGNMENT_H

@@ -25,9 +25,7 @@
 #include <optional>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // A product's angle is taken as 2 pi m / n if within 0.01 radian of it (0.6 degree: found axes of
 // approximate symmetries are within a fraction of a degree of their true place); a product that
@@ -103,8 +101,6 @@ inline std::vector<Axis_candidate> group_closure(const std::vector<Axis_candidat
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_GROUP_CLOSURE_H

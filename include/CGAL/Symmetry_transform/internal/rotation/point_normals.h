@@ -21,9 +21,7 @@
 #include <utility>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 class Point_normal_matcher
 {
@@ -65,8 +63,6 @@ private:
   std::vector<Eigen::Vector3d> normals_;
 };
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_POINT_NORMALS_H

@@ -19,9 +19,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // How far from orthogonal the linear part of a user's transformation may be (max |L^T L - I|):
 // rotation matrices typed with 7 or more significant digits pass, a scaling of 1e-5 does not.
@@ -85,8 +83,6 @@ typename GT::Aff_transformation_3 to_transformation(const Rigid_motion& r)
                                            l(2, 0), l(2, 1), l(2, 2), t[2]);
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_RIGID_MOTION_H

@@ -25,9 +25,7 @@
 #include <optional>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // Samples of the coarse stage: the axis point search reads 256 of them per trial axis, the
 // pattern search 512; the order test reads 2000 per angle (its supports then vary by about 1 %
@@ -413,8 +411,6 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_ROTATION_DETECTION_H

@@ -20,9 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // 2 pi (sqrt 2 - 1), 2 pi (2 - golden ratio) (the golden angle) and 2 pi (sqrt 3 - 1): 149.1,
 // 137.5 and 263.5 degrees. Every k-fold symmetry with k <= 25 misses one of them by more than
@@ -124,8 +122,6 @@ Rotation_order rotation_order(const std::vector<Eigen::Vector3d>& samples, const
   return result;
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_ROTATION_ORDER_H

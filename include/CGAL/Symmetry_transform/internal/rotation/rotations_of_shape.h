@@ -23,9 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-namespace internal {
+namespace CGAL::Symmetry_transform::internal {
 
 // The coarse stage reads a GEDT at 32^3 (or the user's resolution if lower): its width, about
 // 0.13 R, is the reach of the axis point search and of the pattern search.
@@ -98,8 +96,6 @@ rotations_of_points(const PointRange& points, int max_order, const NamedParamete
   return rotational_symmetries(search, {});
 }
 
-} // namespace internal
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_ROTATIONS_OF_SHAPE_H
