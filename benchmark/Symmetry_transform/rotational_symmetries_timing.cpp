@@ -14,7 +14,7 @@
 // figure: other programs lengthen the wall clock of both detections alike, not their CPU time.
 //
 // Usage: rotational_symmetries_timing [--meshes pinion.off,rotor.off,...] [--resolution 64]
-//          [--repeats 3] [--seed 0]
+//          [--repeats 3] [--seed 0] [--verbose 1] (the stages of the rotational detection, on stderr)
 // A mesh given as a bare name is looked for in SYMMETRY_TRANSFORM_DATA_DIR/meshes/; a name with
 // a '/' is a path.
 
@@ -113,15 +113,17 @@ try {
   std::string meshes = default_meshes;
   int resolution = 64;
   unsigned repeats = 3, seed = 0;
+  bool verbose = false;
   for(int a = 1; a + 1 < argc; a += 2) {
     const std::string arg = argv[a], value = argv[a + 1];
     if(arg == "--meshes") meshes = value;
     else if(arg == "--resolution") resolution = std::stoi(value);
     else if(arg == "--repeats") repeats = unsigned(std::stoul(value));
     else if(arg == "--seed") seed = unsigned(std::stoul(value));
+    else if(arg == "--verbose") verbose = value != "0";
     else throw std::invalid_argument("unknown option " + arg);
   }
-  const auto np = CGAL::parameters::grid_resolution(resolution).random_seed(seed);
+  const auto np = CGAL::parameters::grid_resolution(resolution).random_seed(seed).verbose(verbose);
   std::cout << "| mesh | faces | orders found | rotations: wall | CPU | planes: wall | CPU | ratio wall | ratio CPU |\n"
             << "|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
   std::string axes = "| mesh | order | direction | point nearest to the centre | symmetry | support |\n|---|---:|---|---|---:|---:|\n";
