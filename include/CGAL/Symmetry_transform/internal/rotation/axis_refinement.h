@@ -155,6 +155,9 @@ constexpr std::size_t polish_stride = 4;
 
 // Whether to give up the refinement of an axis (heading for one already found).
 typedef std::function<bool(const Daxis&)> Axis_abandon;
+// Whether to end a refinement with the exact matches, given the walk's result (no if the walk's
+// axis turns out not to be worth it: its order is not the one assumed, and it is refined again).
+typedef std::function<bool(const Axis_refinement&)> Axis_polish_if;
 
 // Gauss-Newton from result.axis, whose sums are given, with weights of width `width` sigma. A
 // step is taken if it raises the sum of the weights; one that does not is halved, and the
@@ -200,12 +203,13 @@ Axis_fit_sums gauss_newton(const std::vector<Eigen::Vector3d>& samples, const st
 // all of them at sigma, narrowed to sigma / 2 and sigma / 4 while the matches are much closer
 // than the width (the mean weight at half the width above 85 % of it, as ISP: an exact
 // symmetry), all walking with `walk_matcher`; then up to four steps with the exact `matcher`, on
-// a fourth of the samples.
+// a fourth of the samples, if `polish_if` (when given) says so of the walk's result.
 // `abandon` may stop it (an axis heading for one already found).
 template <typename Matcher, typename Walk_matcher>
 Axis_refinement refine_axis(const std::vector<Eigen::Vector3d>& samples, const Daxis& start,
                             const std::vector<double>& angles, const Matcher& matcher, const Walk_matcher& walk_matcher,
-                            const Isp_settings& settings, const Eigen::Vector3d& center, const Axis_abandon& abandon = {})
+                            const Isp_settings& settings, const Eigen::Vector3d& center, const Axis_abandon& abandon = {},
+                            const Axis_polish_if& polish_if = {})
 {
   Axis_refinement result{start};
   const std::vector<Eigen::Vector3d> coarse(samples.begin(), samples.begin() + std::ptrdiff_t(samples.size() / 8));
@@ -226,7 +230,7 @@ Axis_refinement refine_axis(const std::vector<Eigen::Vector3d>& samples, const D
     result.width = narrower;
     last = climb(samples, narrower, hints);
   }
-  if(result.abandoned) return result;
+  if(result.abandoned || (polish_if && !polish_if(result))) return result;
   // The exact end reads every fourth sample (in ISP's order, a regular stride covers the shape):
   // on an exact symmetry any of them give the same axis, and exact searches cost up to 20 times
   // the walk's on thin shapes, whose triangles' boxes overlap (blade.off: 0.8 s for all samples).

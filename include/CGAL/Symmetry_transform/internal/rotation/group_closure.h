@@ -9,8 +9,10 @@
 // shape is an axis of the same order, and the product of two rotations is a rotation. From the
 // axes found, these give the others of the group: the 2k two-fold axes of a gear with k teeth
 // (dihedral group: k axes across the k-fold one, in two classes) from the k-fold axis and one of
-// them, the 3-fold axes of a cube from its 4-fold ones. They are candidates, refined and tested
-// as the others (a product of approximate symmetries need not be one).
+// them, the 3-fold axes of a cube from its 4-fold ones. What exact symmetries generate is exact
+// (the images of their axes keep their orders, the products' axes need their orders tested);
+// what approximate ones generate is a candidate, refined and tested as the others (a product of
+// approximate symmetries need not be one).
 
 #include <CGAL/Symmetry_transform/internal/rotation/axis.h>
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
@@ -73,30 +75,43 @@ inline std::optional<Axis_candidate> axis_of(const Rigid_motion& r, int max_orde
   return Axis_candidate{{center + shift, direction}, order, 0.};
 }
 
+// The axes a set of found ones generates: the images of found axes by the rotations about
+// others (an image of a k-fold axis of a shape by one of its symmetries is a k-fold axis of it),
+// and the axes of products of two rotations (whose order may be a multiple of the product's).
+// Each candidate's score is the least of the scores of the two found axes it comes from.
+struct Generated_axes
+{
+  std::vector<Axis_candidate> images;
+  std::vector<Axis_candidate> products;
+};
+
 // The axes the found ones generate and that are not among them (`same` tells two axes apart):
 // the images of each discrete axis by the rotations about each other, and the axes of the
 // products of their generators. `found`: discrete axes with their orders (continuous ones are
 // left out: their images are infinitely many).
-inline std::vector<Axis_candidate> group_closure(const std::vector<Axis_candidate>& found, int max_order,
-                                                 const Eigen::Vector3d& center, double radius,
-                                                 const std::function<bool(const Daxis&, const Daxis&)>& same)
+inline Generated_axes group_closure(const std::vector<Axis_candidate>& found, int max_order, const Eigen::Vector3d& center,
+                                    double radius, const std::function<bool(const Daxis&, const Daxis&)>& same)
 {
-  std::vector<Axis_candidate> result;
-  auto add = [&](const Axis_candidate& c) {
+  Generated_axes result;
+  auto add = [&](std::vector<Axis_candidate>& to, const Axis_candidate& c) {
     auto is_c = [&](const Axis_candidate& other) { return same(other.axis, c.axis); };
-    if(std::none_of(found.begin(), found.end(), is_c) && std::none_of(result.begin(), result.end(), is_c))
-      result.push_back(c);
+    if(std::none_of(found.begin(), found.end(), is_c) && std::none_of(result.images.begin(), result.images.end(), is_c) &&
+       std::none_of(result.products.begin(), result.products.end(), is_c))
+      to.push_back(c);
   };
   for(const Axis_candidate& a : found)
     for(const Axis_candidate& b : found) {
       if(&a == &b || a.order < 2 || b.order < 2) continue;
+      const double score = (std::min)(a.score, b.score);
       const Rigid_motion rb = b.axis.rotation(2. * CGAL_PI / double(b.order));
       Rigid_motion power = rb;
       for(int j = 1; j < b.order; ++j, power = compose(rb, power))
-        add({{power(a.axis.point), (power.linear * a.axis.direction).normalized()}, a.order, 0.});
-      if(const std::optional<Axis_candidate> product =
-           axis_of(compose(a.axis.rotation(2. * CGAL_PI / double(a.order)), rb), max_order, center, radius))
-        add(*product);
+        add(result.images, {{power(a.axis.point), (power.linear * a.axis.direction).normalized()}, a.order, score});
+      if(std::optional<Axis_candidate> product =
+           axis_of(compose(a.axis.rotation(2. * CGAL_PI / double(a.order)), rb), max_order, center, radius)) {
+        product->score = score;
+        add(result.products, *product);
+      }
     }
   return result;
 }

@@ -189,8 +189,10 @@ Found_rotation<GT> measured(const Rotation_search<GT, M, W>& s, const Daxis& axi
 
 // A coarse axis refined on the surface, its order found, measured; none if it heads for an axis
 // already `found`, if no rotation holds, or if it maps less than min_rotation_support of the
-// shape onto the shape. If the order found is not a multiple of the candidate's, the refinement
-// fitted a rotation that does not hold: it is run again for the best supported order.
+// shape onto the shape. The order is tested on the walk's axis (at sigma / 2, or at the narrower
+// width the walk reached), before the exact end of the refinement: if it is not a multiple of the
+// candidate's, the walk fitted a rotation that does not hold, and is run again for the best
+// supported order without the exact end of the first (on blade.off, two of four candidates).
 template <typename GT, typename M, typename W>
 std::optional<Found_rotation<GT>> refined_rotation(const Rotation_search<GT, M, W>& s, const Axis_candidate& candidate,
                                                    const std::vector<Eigen::Vector3d>& order_probes,
@@ -201,22 +203,21 @@ std::optional<Found_rotation<GT>> refined_rotation(const Rotation_search<GT, M, 
   const Axis_abandon heading_for_found = [&](const Daxis& axis) {
     return std::any_of(found.begin(), found.end(), [&](const Found_rotation<GT>& f) { return parallel_axes(axis, f.axis); });
   };
-  auto refine = [&](const Daxis& axis, int k) {
-    return refine_axis(s.samples, axis, refinement_angles(k), s.matcher, s.walk_matcher, s.settings, center, heading_for_found);
-  };
-  // The order is tested at sigma / 2, or at the narrower width the refinement reached.
-  auto test_order = [&](const Axis_refinement& r) {
-    return rotation_order(order_probes, r.axis, s.max_order, s.walk_matcher, s.settings, (std::min)(r.width, 0.5));
-  };
-  Axis_refinement refined = refine(candidate.axis, candidate.order);
+  // The order is tested on the walk's axis, at sigma / 2 or at the narrower width the walk
+  // reached; the exact end of the refinement is run only where the order is the one assumed.
   Rotation_order order;
-  if(!refined.abandoned) {
-    order = test_order(refined);
-    if(order.order > 0 && order.order % candidate.order != 0) {
-      refined = refine(refined.axis, order.best_order);
-      if(!refined.abandoned) order = test_order(refined);
-    }
-  }
+  const Axis_polish_if test_order = [&](const Axis_refinement& r) {
+    order = rotation_order(order_probes, r.axis, s.max_order, s.walk_matcher, s.settings, (std::min)(r.width, 0.5));
+    return true;
+  };
+  auto wrong_order = [&]() { return order.order > 0 && order.order % candidate.order != 0; };
+  auto refine = [&](const Daxis& axis, int k, const Axis_polish_if& polish_if) {
+    return refine_axis(s.samples, axis, refinement_angles(k), s.matcher, s.walk_matcher, s.settings, center,
+                       heading_for_found, polish_if);
+  };
+  Axis_refinement refined =
+    refine(candidate.axis, candidate.order, [&](const Axis_refinement& r) { return test_order(r) && !wrong_order(); });
+  if(!refined.abandoned && wrong_order()) refined = refine(refined.axis, order.best_order, test_order);
   std::optional<Found_rotation<GT>> result;
   if(!refined.abandoned && order.order >= 0) result = measured(s, refined.axis, order.order);
   const bool kept = result && result->sharp_support >= min_rotation_support;
@@ -337,42 +338,114 @@ std::vector<Found_rotation<GT>> consistent(std::vector<Found_rotation<GT>> found
   return result;
 }
 
+// Whether `axis` is a continuous axis found, or a flip about one.
+template <typename GT>
+bool flip_of_continuous(const Daxis& axis, const std::vector<Found_rotation<GT>>& found, double radius)
+{
+  return std::any_of(found.begin(), found.end(), [&](const Found_rotation<GT>& f) {
+    return f.symmetry.order == 0 && (parallel_axes(axis, f.axis) || meets_at_right_angle(axis, f.axis, radius, 1.));
+  });
+}
+
 // Rotations generate the group only if they are symmetries, not approximations of ones: the
 // group closure starts from the axes whose support at sigma / 2 is at least 0.95 (exact ones
 // measure above 0.99; with 0.2 % vertex noise, 0.99).
 constexpr double min_generator_support = 0.95;
+// A found rotation whose support at sigma / 2 is at least 0.99 is exact to the accuracy of the
+// samples (exact symmetries: 0.99 to 1; the approximate flips of blade.off, a thin blade not
+// quite symmetric: 0.90 to 0.95). What two exact rotations generate needs no refinement: an
+// image of an exact axis by an exact rotation is an axis of the same order, taken as it is, and
+// the axis of their product is exact, only its order is tested, at the width the refinement
+// narrows to on an exact symmetry, sigma / 4.
+constexpr double exact_rotation_support = 0.99;
+constexpr double exact_rotation_width = 0.25;
 
-// The axes of the group the consistent ones found generate (group_closure.h), refined and tested,
-// added to `found`, until no new one holds (three rounds at most: enough for the dihedral groups, whose
-// second class of 2-fold axes comes from products of the first, and for the cube's). The flips
-// about a continuous axis are left out, as generators and as results: they generate one another
-// without end, and one of them stands for all.
+// The generators of the group: the consistent discrete axes found whose support at sigma / 2 is
+// at least `min_support`, each scored by that support; flips about continuous axes left out
+// (they generate one another without end, and one of them stands for all).
+template <typename GT>
+std::vector<Axis_candidate> group_generators(const std::vector<Found_rotation<GT>>& found, const Eigen::Vector3d& center,
+                                            double radius, double min_support)
+{
+  std::vector<Axis_candidate> generators;
+  for(const Found_rotation<GT>& f : consistent(found, center, radius))
+    if(f.symmetry.order >= 2 && f.sharp_support >= min_support && !flip_of_continuous(f.axis, found, radius))
+      generators.push_back({f.axis, f.symmetry.order, f.sharp_support});
+  return generators;
+}
+
+// An axis the group closure generated from found ones: refined and tested as the others if one
+// of them is not exact; else measured as it is, with the order of the axis it is an image of,
+// or, for the axis of a product, the order tested there (refined as the others if that order is
+// not a multiple of the product's). None if it maps less than min_rotation_support of the shape
+// onto the shape.
+template <typename GT, typename M, typename W>
+std::optional<Found_rotation<GT>> generated_rotation(const Rotation_search<GT, M, W>& s, const Axis_candidate& c,
+                                                     bool image, const std::vector<Eigen::Vector3d>& order_probes,
+                                                     const std::vector<Found_rotation<GT>>& found)
+{
+  if(c.score < exact_rotation_support) return refined_rotation(s, c, order_probes, found);
+  int order = c.order;
+  if(!image) {
+    const Rotation_order tested =
+      rotation_order(order_probes, c.axis, s.max_order, s.walk_matcher, s.settings, exact_rotation_width);
+    if(tested.order < 0 || (tested.order > 0 && tested.order % c.order != 0))
+      return refined_rotation(s, c, order_probes, found);
+    order = tested.order;
+  }
+  const Found_rotation<GT> result = measured(s, c.axis, order);
+  const bool kept = result.sharp_support >= min_rotation_support;
+  if(s.verbose)
+    std::cerr << "  generated (" << c.axis.direction.transpose() << ") order " << order << (image ? " (image)" : " (product)")
+              << ": support " << result.symmetry.support << " (at sigma / 2: " << result.sharp_support << "), symmetry "
+              << result.symmetry.symmetry << (kept ? ", kept\n" : ", dropped\n");
+  if(!kept) return std::nullopt;
+  return result;
+}
+
+// The axes of the group the consistent ones found generate (group_closure.h), added to `found`
+// (generated_rotation()), until no new one holds (three rounds at most: enough for the dihedral
+// groups, whose second class of 2-fold axes comes from products of the first, and for the
+// cube's). The flips about a continuous axis are left out, as generators and as results.
 template <typename GT, typename M, typename W>
 void close_group(const Rotation_search<GT, M, W>& s, const std::vector<Eigen::Vector3d>& order_probes,
                  std::vector<Found_rotation<GT>>& found)
 {
   const Eigen::Vector3d center = s.mass.center();
   const double radius = s.mass.radius();
-  auto flip_of_continuous = [&](const Daxis& axis) {
-    return std::any_of(found.begin(), found.end(), [&](const Found_rotation<GT>& f) {
-      return f.symmetry.order == 0 && (parallel_axes(axis, f.axis) || meets_at_right_angle(axis, f.axis, radius, 1.));
-    });
-  };
   for(int round = 0; round < 3; ++round) {
-    std::vector<Axis_candidate> discrete; // the generators: the consistent axes found
-    for(const Found_rotation<GT>& f : consistent(found, center, radius))
-      if(f.symmetry.order >= 2 && f.sharp_support >= min_generator_support && !flip_of_continuous(f.axis))
-        discrete.push_back({f.axis, f.symmetry.order, 0.});
-    const std::vector<Axis_candidate> generated = group_closure(
-      discrete, s.max_order, center, radius, [&](const Daxis& a, const Daxis& b) { return same_axis(a, b, center, radius); });
+    const Generated_axes generated =
+      group_closure(group_generators(found, center, radius, min_generator_support), s.max_order, center, radius,
+                    [&](const Daxis& a, const Daxis& b) { return same_axis(a, b, center, radius); });
     const std::size_t before = found.size();
-    for(const Axis_candidate& c : generated) {
-      if(found.size() == max_group_axes) break;
-      if(flip_of_continuous(c.axis)) continue;
-      if(std::optional<Found_rotation<GT>> f = refined_rotation(s, c, order_probes, found)) found.push_back(*f);
-    }
+    for(const bool image : {true, false})
+      for(const Axis_candidate& c : image ? generated.images : generated.products) {
+        if(found.size() == max_group_axes) break;
+        if(flip_of_continuous(c.axis, found, radius)) continue;
+        if(std::optional<Found_rotation<GT>> f = generated_rotation(s, c, image, order_probes, found)) found.push_back(*f);
+      }
     if(found.size() == before) break;
   }
+}
+
+// Whether a coarse candidate is an axis that the exact rotations found generate (group_closure()
+// run to its end, up to max_group_axes): close_group() then adds it without refinement.
+template <typename GT>
+bool generated_by_exact(const Axis_candidate& c, const std::vector<Found_rotation<GT>>& found,
+                        const Eigen::Vector3d& center, double radius, int max_order)
+{
+  auto same = [&](const Daxis& a, const Daxis& b) { return same_axis(a, b, center, radius); };
+  std::vector<Axis_candidate> group = group_generators(found, center, radius, exact_rotation_support);
+  for(int round = 0; round < 3 && group.size() < max_group_axes; ++round) {
+    const Generated_axes generated = group_closure(group, max_order, center, radius, same);
+    if(generated.images.empty() && generated.products.empty()) break;
+    group.insert(group.end(), generated.images.begin(), generated.images.end());
+    group.insert(group.end(), generated.products.begin(), generated.products.end());
+  }
+  return std::any_of(group.begin(), group.end(), [&](const Axis_candidate& g) {
+    return same_axis(c.axis, g.axis, center, coarse_tolerance * same_axis_degrees * CGAL_PI / 180.,
+                     coarse_tolerance * same_axis_distance * radius);
+  });
 }
 
 // The rotational symmetries found from the axes of inertia, the search of directions and the
@@ -396,11 +469,13 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
   const std::vector<Eigen::Vector3d> order_probes = spread_subset(s.samples, order_samples);
   std::vector<Found_rotation<GT>> found;
   bool flip_refined = false; // about a continuous axis found: its flips are all alike, one is refined
+  // An axis the exact rotations found generate is left to close_group(), which maps it there
+  // (the icosahedron: 2 of its 15 coarse axes refined, the 29 others generated).
   for(const Axis_candidate& c : axes) {
     const bool flip = std::any_of(found.begin(), found.end(), [&](const Found_rotation<GT>& f) {
       return f.symmetry.order == 0 && meets_at_right_angle(c.axis, f.axis, s.mass.radius(), coarse_tolerance);
     });
-    if(flip && flip_refined) continue;
+    if((flip && flip_refined) || generated_by_exact(c, found, center, s.mass.radius(), s.max_order)) continue;
     flip_refined = flip_refined || flip;
     if(std::optional<Found_rotation<GT>> f = refined_rotation(s, c, order_probes, found)) found.push_back(*f);
   }
