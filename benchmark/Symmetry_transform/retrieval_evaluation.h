@@ -9,9 +9,9 @@
 // tier, E-measure, discounted cumulative gain and the precision-recall curve follow.
 // Plain C++17, no CGAL: the tests check it on hand-made cases.
 //
-// One deliberate difference from psbPlot: precision is k / (rank of the k-th hit among the other
-// models), as psbPlot's README defines it; psbPlot's code counts the query itself in the rank
-// when it sorts first (distance 0), which lowers its curve.
+// The statistics leave the query out of its list (psbTable); the precision-recall curve counts it
+// as the first result, relevant, as psbPlot does (its USE_QUERY setting): recall k / C for the
+// k-th of the C models of the class, the query being the first.
 
 #ifndef SYMMETRY_TRANSFORM_RETRIEVAL_EVALUATION_H
 #define SYMMETRY_TRANSFORM_RETRIEVAL_EVALUATION_H
@@ -143,17 +143,18 @@ inline Scores query_scores(const std::vector<bool>& relevant, std::size_t others
   return s;
 }
 
-// The precision when the k-th relevant result is found, k = 1 .. others: k / its rank.
+// The precision when the k-th model of the query's class is found, k = 1 .. C: k / its rank, in
+// the list that starts with the query itself (precision 1 at rank 1), as psbPlot counts.
 inline std::vector<double> precision_at_hits(const std::vector<bool>& relevant)
 {
-  std::vector<double> p;
+  std::vector<double> p(1, 1.); // the query
   for(std::size_t r = 0; r < relevant.size(); ++r)
-    if(relevant[r]) p.push_back(double(p.size() + 1) / double(r + 1));
+    if(relevant[r]) p.push_back(double(p.size() + 1) / double(r + 2));
   return p;
 }
 
-// The precision of one query at recall `recall`, linearly interpolated between the recalls k/others
-// of its hits (psbPlot's convention: flat below the first hit and above the last).
+// The precision of one query at recall `recall`, linearly interpolated between the recalls k/C
+// of its hits (psbPlot's convention: flat above the last).
 inline double precision_at_recall(const std::vector<double>& hits, double recall)
 {
   const double x = recall * double(hits.size()) - 1.; // the position among the hits, 0-based
@@ -175,7 +176,7 @@ struct Summary
 
 // `distances`: n x n, row i the distances from model i. A query counts if its class has at least
 // smallest_evaluated_class models and is not the miscellaneous class. At recall level r a query
-// counts only if r >= 1/others (psbPlot: below the first hit its precision is not defined).
+// of a class of C models counts only if r >= 1/C (psbPlot: below it no precision is defined).
 inline Summary evaluate(const std::vector<std::vector<double>>& distances, const Classification& c)
 {
   const std::size_t n = c.class_of.size(), classes = c.class_names.size();

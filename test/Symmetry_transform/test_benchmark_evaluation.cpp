@@ -145,13 +145,15 @@ TEST(RetrievalEvaluation, MatrixByHand)
   EXPECT_DOUBLE_EQ(s.mean.dcg, (dcg0 + 5.) / 6.);
   // Perfect queries: 2 hits in 5 as well, E = e0 for all.
   EXPECT_DOUBLE_EQ(s.mean.e_measure, e0);
-  // Precision at the hits of query 0: 1, 2/3; of the others 1, 1. Recall 1/20 .. 9/20 are below
-  // the first hit (1/2): no point there. At 3/4 query 0 interpolates halfway: 5/6.
+  // The precision-recall curve counts the query as its first result (psbPlot): query 0 finds its
+  // class at ranks 1 (itself), 2 and 4 (precision 1, 1, 3/4), the others at 1, 2, 3. Recall 1/20
+  // .. 6/20 are below 1/3: no point there. At 3/4 query 0 interpolates a quarter of the way from
+  // 1 to 3/4.
   ASSERT_EQ(s.precision.size(), RE::recall_levels);
-  EXPECT_DOUBLE_EQ(s.precision[0], 0.);
-  EXPECT_DOUBLE_EQ(s.precision[9], 1.);                    // recall 1/2
-  EXPECT_DOUBLE_EQ(s.precision[14], (5. / 6. + 5.) / 6.);  // recall 3/4
-  EXPECT_DOUBLE_EQ(s.precision[19], (2. / 3. + 5.) / 6.);  // recall 1
+  EXPECT_DOUBLE_EQ(s.precision[5], 0.);                      // recall 0.30
+  EXPECT_DOUBLE_EQ(s.precision[6], 1.);                      // recall 0.35
+  EXPECT_DOUBLE_EQ(s.precision[14], (0.9375 + 5.) / 6.);     // recall 0.75
+  EXPECT_DOUBLE_EQ(s.precision[19], (0.75 + 5.) / 6.);       // recall 1
 }
 
 TEST(RetrievalEvaluation, SmallClassesAreLeftOut)
