@@ -182,8 +182,9 @@ inline Hamming hamming_distance(const Overlap& o)
     matched_evaluated += *std::max_element(o.area.begin() + std::ptrdiff_t(i * o.columns),
                                            o.area.begin() + std::ptrdiff_t((i + 1) * o.columns));
   Hamming h;
-  h.missing = (o.total_area - matched_reference) / o.total_area;
-  h.false_alarm = (o.total_area - matched_evaluated) / o.total_area;
+  // max(0, .): the sums of the same areas in another order may differ by a rounding error.
+  h.missing = std::max(0., o.total_area - matched_reference) / o.total_area;
+  h.false_alarm = std::max(0., o.total_area - matched_evaluated) / o.total_area;
   h.distance = 0.5 * (h.missing + h.false_alarm);
   return h;
 }
