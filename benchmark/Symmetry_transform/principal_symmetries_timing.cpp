@@ -151,7 +151,7 @@ int main(int argc, char** argv)
     std::cerr << name << ": stages..." << std::endl;
     std::optional<ST::Voxel_grid<K>> gedt_holder; // no default constructors
     std::vector<std::int32_t> closest_triangles;
-    const std::vector<STI::Dtriangle> mesh_triangles = STI::triangles_of_mesh(mesh, get(CGAL::vertex_point, mesh));
+    const std::vector<STI::Dtriangle> mesh_triangles = STI::triangles_of_mesh(mesh, CGAL::parameters::default_values());
     const double gedt_time = median_time(repeats, [&] {
       gedt_holder.emplace(STI::gaussian_distance_transform_of_triangles<K>(mesh_triangles, np, &closest_triangles));
     });
@@ -167,7 +167,7 @@ int main(int argc, char** argv)
     const double tree_time = median_time(repeats, [&] {
       field_holder.reset();
       matcher_holder.reset();
-      triangles = STI::triangles_of_mesh(mesh, get(CGAL::vertex_point, mesh));
+      triangles = STI::triangles_of_mesh(mesh, CGAL::parameters::default_values());
       matcher_holder.emplace(triangles);
       field_holder.emplace(triangles, *matcher_holder, closest_triangles, gedt.origin(), gedt.voxel_size(),
                            gedt.resolution());

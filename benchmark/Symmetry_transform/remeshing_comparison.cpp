@@ -57,6 +57,8 @@
 #include <vector>
 
 #include "benchmark_utilities.h"
+// Shared with test_symmetric_remeshing: the manifold defects of a triangle soup.
+#include "Symmetry_transform_soup_defects.h" // test/Symmetry_transform/include
 
 namespace {
 
@@ -213,7 +215,7 @@ try {
         symmetry[m] = ST::symmetry_error(out, planes.front(), mesh, 0.02 * diagonal, metric_np) / diagonal;
         const double whole = ST::symmetry_error(out, planes.front(), metric_np) / diagonal;
         const char* method[3] = {"symmetric VSA, K", "CGAL VSA, K", "CGAL VSA, 2K"};
-        const auto d = ST::internal::soup_defects(runs[m].soup.points.size(), runs[m].soup.triangles);
+        const auto d = st_test::soup_defects(runs[m].soup.points.size(), runs[m].soup.triangles);
         border[m] += d.border_edges;
         non_manifold[m] += d.non_manifold_vertices;
         std::cerr << name << " K = " << k << ", " << method[m] << ": " << d.border_edges << " border edges, "

@@ -20,7 +20,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/mesh_segmentation.h>
 
-#include <CGAL/Symmetry_transform/internal/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/symmetry_segmentation.h>
 
 #include <algorithm>

@@ -12,14 +12,15 @@
 //          [--seed S] [--output FILE.ply|.off]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/transform.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Real_timer.h>
 
 #include <CGAL/Symmetry_transform/symmetry_alignment.h>
 
-#include <chrono>
+#include "command_line_options.h"
+#include "input_files.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -28,17 +29,8 @@
 #include <string>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef examples::Triangle_soup<K::Point_3> Soup;
 namespace ST = CGAL::Symmetry_transform;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-std::size_t integer(const std::string& option, const std::string& text, std::size_t minimum = 1)
-{
-  if(text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos ||
-     std::stoull(text) < minimum)
-    throw std::invalid_argument(option + " expects an integer >= " + std::to_string(minimum) + ", not '" + text + "'");
-  return std::size_t(std::stoull(text));
-}
 
 void print(const std::string& name, const ST::Symmetry_frame<K>& frame)
 {
@@ -52,44 +44,11 @@ double degrees_between_lines(const K::Vector_3& a, const K::Vector_3& b)
   return std::min(d, 180. - d);
 }
 
-int main(int argc, char** argv)
-try {
-  std::string filename, output = "align_to_symmetry_frame.ply";
-  std::size_t resolution = 64, samples = 500000, seed = 0; // samples: detection's default
-  for(int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if(arg.rfind("--", 0) != 0) { filename = arg; continue; }
-    if(a + 1 == argc) throw std::invalid_argument(arg + " expects a value");
-    const std::string value = argv[++a];
-    if(arg == "--resolution") resolution = integer(arg, value);
-    else if(arg == "--samples") samples = integer(arg, value);
-    else if(arg == "--seed") seed = integer(arg, value, 0);
-    else if(arg == "--output") output = value;
-    else throw std::invalid_argument("unknown option: " + arg);
-  }
-  if(filename.empty()) filename = CGAL::data_file_path("meshes/bull.off");
-
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || is_empty(mesh)) {
-    std::cerr << "Cannot read a polygon mesh from '" << filename << "' (OFF, PLY, OBJ or STL; with no "
-              << "argument, set CGAL_DATA_DIR to the directory holding meshes/bull.off)." << std::endl;
-    return EXIT_FAILURE;
-  }
-  std::cout << filename << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces\n";
-  if(!CGAL::is_triangle_mesh(mesh)) {
-    if(!PMP::triangulate_faces(mesh)) throw std::runtime_error("some faces could not be triangulated");
-    std::cout << "Triangulated the polygons: " << num_faces(mesh) << " triangles\n";
-  }
-
-  // Principal symmetries on resolution^3 grids, then the frame they define.
-  const auto np = CGAL::parameters::grid_resolution(int(resolution)).number_of_samples(samples).random_seed(unsigned(seed));
-  const auto start = std::chrono::steady_clock::now();
-  const ST::Symmetry_frame<K> frame = ST::symmetry_frame(mesh, np);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const ST::Symmetry_frame<K> pca = ST::pca_frame(mesh);
-
-  std::cout << std::setprecision(4) << "Symmetry frame in " << seconds << " s (grid " << resolution << "^3, "
-            << samples << " Monte Carlo samples)\n";
+// The symmetry frame next to the PCA frame (centre of mass, axes of largest variance first),
+// which it replaces where the variances of a shape are close.
+void print_with_pca_frame(const ST::Symmetry_frame<K>& frame, const Soup& soup)
+{
+  const ST::Symmetry_frame<K> pca = ST::pca_frame_of_triangle_soup(soup.points, soup.triangles);
   print("Symmetry frame (centre of symmetry, principal symmetry axes):", frame);
   print("PCA frame (centre of mass, principal axes, largest variance first):", pca);
   std::cout << "Centres " << std::sqrt(CGAL::squared_distance(frame.center, pca.center)) << " apart; each symmetry axis "
@@ -100,12 +59,33 @@ try {
     std::cout << " " << best;
   }
   std::cout << " deg\n";
+}
 
-  // The mesh in its canonical frame.
-  PMP::transform(ST::to_canonical(frame), mesh);
-  if(!CGAL::IO::write_polygon_mesh(output, mesh, CGAL::parameters::stream_precision(17)))
+int main(int argc, char** argv)
+try {
+  const examples::Command_line_options options(argc, argv);
+  const std::string filename = options.input_file("meshes/bull.off");
+  const std::size_t resolution = options.integer("--resolution", 64), samples = options.integer("--samples", 500000),
+                    seed = options.integer("--seed", 0, 0);
+  const std::string output = options.text("--output", "align_to_symmetry_frame.ply");
+  options.reject_unknown();
+  Soup soup = examples::read_triangle_soup<K::Point_3>(filename); // any mesh file, repaired as a soup
+
+  CGAL::Real_timer timer;
+  timer.start();
+  const ST::Symmetry_frame<K> frame = ST::symmetry_frame_of_triangle_soup(soup.points, soup.triangles,
+    CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples and PRST bins per axis
+                      number_of_samples(samples).       // Monte Carlo samples of the PRST
+                      random_seed(unsigned(seed)));     // the same seed, the same frame
+  std::cout << std::setprecision(4) << "Symmetry frame in " << timer.time() << " s (grid " << resolution << "^3, "
+            << samples << " Monte Carlo samples)\n";
+  print_with_pca_frame(frame, soup);
+
+  const K::Aff_transformation_3 to_canonical = ST::to_canonical(frame); // the symmetry frame becomes x, y, z
+  for(K::Point_3& p : soup.points) p = to_canonical.transform(p);
+  if(!CGAL::IO::write_polygon_soup(output, soup.points, soup.triangles, CGAL::parameters::stream_precision(17)))
     throw std::runtime_error("cannot write " + output);
-  std::cout << "Wrote " << output << ": the mesh moved to its symmetry frame (centre at the origin, axes x, y, z)\n";
+  std::cout << "Wrote " << output << ": the surface moved to its symmetry frame (centre at the origin, axes x, y, z)\n";
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {

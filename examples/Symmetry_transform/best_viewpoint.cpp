@@ -1,3 +1,7 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+//
 // Chooses the best views of a mesh from its symmetries (thesis, Section 4.3): finds its principal
 // planes of symmetry, scores each view direction v by S(v) = sum |v.u| M(u) over the planes (unit
 // normals u, symmetry M(u)), prints the best views (local maxima of S: the views wasting the least
@@ -9,51 +13,33 @@
 //          [--views K] [--output FILE.ply]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
+#include <CGAL/Symmetry_transform/symmetry_measure.h>
 #include <CGAL/Symmetry_transform/viewpoint_selection.h>
 
+#include "colour_ramps.h"
+#include "coloured_ply.h"
+#include "command_line_options.h"
+#include "input_files.h"
+#include "shape_extent.h"
+
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <iterator>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef examples::Triangle_soup<K::Point_3> Soup;
 namespace ST = CGAL::Symmetry_transform;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-// A dark-to-bright colour ramp (close to matplotlib's "inferno"): 0 is black, 1 is pale yellow.
-CGAL::IO::Color ramp(double t)
-{
-  static const double stops[5][3] = {{0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}};
-  t = std::clamp(t, 0., 1.) * 4.;
-  const int s = std::min(int(t), 3);
-  auto channel = [&](int c) {
-    return (unsigned char)std::lround(stops[s][c] + (t - s) * (stops[s + 1][c] - stops[s][c]));
-  };
-  return CGAL::IO::Color(channel(0), channel(1), channel(2));
-}
-
-std::size_t integer(const std::string& option, const std::string& text, std::size_t minimum = 1)
-{
-  if(text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos ||
-     std::stoull(text) < minimum)
-    throw std::invalid_argument(option + " expects an integer >= " + std::to_string(minimum) +
-                                ", not '" + text + "'");
-  return std::size_t(std::stoull(text));
-}
 
 std::string direction(const K::Vector_3& v)
 {
@@ -63,54 +49,25 @@ std::string direction(const K::Vector_3& v)
   return s.str();
 }
 
-int main(int argc, char** argv)
-try {
-  std::string filename, output = "best_viewpoint.ply";
-  std::size_t resolution = 64, samples = 500000, seed = 0, views = 5; // samples: detection's default
-  for(int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if(arg.rfind("--", 0) != 0) { filename = arg; continue; }
-    if(a + 1 == argc) throw std::invalid_argument(arg + " expects a value");
-    const std::string value = argv[++a];
-    if(arg == "--resolution") resolution = integer(arg, value);
-    else if(arg == "--samples") samples = integer(arg, value);
-    else if(arg == "--seed") seed = integer(arg, value, 0);
-    else if(arg == "--views") views = integer(arg, value);
-    else if(arg == "--output") output = value;
-    else throw std::invalid_argument("unknown option: " + arg);
-  }
-  if(filename.empty()) filename = CGAL::data_file_path("meshes/bull.off");
-
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(filename, mesh) || is_empty(mesh)) {
-    std::cerr << "Cannot read a polygon mesh from '" << filename << "' (OFF, PLY, OBJ or STL; with no "
-              << "argument, set CGAL_DATA_DIR to the directory holding meshes/bull.off)." << std::endl;
-    return EXIT_FAILURE;
-  }
-  std::cout << filename << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh) << " faces\n";
-  if(!CGAL::is_triangle_mesh(mesh)) {
-    if(!PMP::triangulate_faces(mesh)) throw std::runtime_error("some faces could not be triangulated");
-    std::cout << "Triangulated the polygons: " << num_faces(mesh) << " triangles\n";
-  }
-
-  // The principal planes: GEDT and PRST on resolution^3 grids, local maxima refined by ISP.
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<ST::Principal_symmetry<K>> symmetries = ST::detect_principal_symmetries(
-    mesh, CGAL::parameters::grid_resolution(int(resolution)).number_of_samples(samples).random_seed(unsigned(seed)));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << std::setprecision(3) << symmetries.size() << " principal symmetries (grid " << resolution
-            << "^3) in " << seconds << " s:\n   #   normal u                   M(u)\n";
-  double total = 0.;
+// Each plane with its symmetry M(u) and its symmetry distance error.
+void print_planes(const std::vector<ST::Principal_symmetry<K>>& symmetries, const Soup& soup)
+{
+  std::cout << "   #   normal u                   M(u)       SDE\n";
   for(std::size_t i = 0; i < symmetries.size(); ++i) {
     const K::Vector_3 n = symmetries[i].plane.orthogonal_vector();
     std::cout << std::setw(4) << i + 1 << "   " << direction(n / std::sqrt(n.squared_length())) << std::fixed
-              << std::setw(10) << symmetries[i].symmetry << std::defaultfloat << "\n";
-    total += symmetries[i].symmetry;
+              << std::setw(10) << symmetries[i].symmetry << std::setprecision(5) << std::setw(10)
+              << ST::symmetry_distance_error_of_triangle_soup(soup.points, soup.triangles, symmetries[i].plane)
+              << std::defaultfloat << "\n";
   }
+}
 
-  // The views: local maxima of S (best first) and its global minimum.
-  std::vector<ST::Viewpoint<K>> best;
-  ST::best_viewpoints(symmetries, std::back_inserter(best));
+// The best views, each with its angle to the nearest plane normal, and the worst one.
+void print_views(const std::vector<ST::Principal_symmetry<K>>& symmetries, const std::vector<ST::Viewpoint<K>>& best,
+                 const ST::Viewpoint<K>& worst, std::size_t views)
+{
+  double total = 0.;
+  for(const auto& s : symmetries) total += s.symmetry;
   if(best.empty()) {
     std::cout << "No plane of symmetry: every view scores S = 0, none is better than another.\n";
   } else {
@@ -129,40 +86,58 @@ try {
     }
     if(best.size() > views) std::cout << "     (" << best.size() - views << " more)\n";
   }
-  const ST::Viewpoint<K> worst = ST::worst_viewpoint(symmetries);
   std::cout << std::fixed << std::setprecision(3) << "Worst view (global minimum of S):   v = "
             << direction(worst.direction) << "   S = " << worst.score << "\n";
+}
 
-  // The score sphere, placed on the mesh: centred on its centre of mass (area-weighted, as the
-  // library's), of its radius (the largest distance from there to a vertex).
+// The score sphere, placed on the mesh (centred on its centre of mass, of its radius) and
+// coloured from dark (the worst score) to bright (the best).
+void write_score_sphere(const std::vector<ST::Principal_symmetry<K>>& symmetries, const Soup& soup, double low,
+                        double high, const std::string& filename, const std::string& output)
+{
   Mesh sphere = ST::viewpoint_score_sphere(symmetries, 5);
-  K::Vector_3 sum = CGAL::NULL_VECTOR;
-  double area = 0.;
-  for(Mesh::Face_index f : faces(mesh)) {
-    const Mesh::Halfedge_index h = halfedge(f, mesh);
-    const K::Point_3 centroid = CGAL::centroid(mesh.point(source(h, mesh)), mesh.point(target(h, mesh)),
-                                               mesh.point(target(next(h, mesh), mesh)));
-    sum = sum + PMP::face_area(f, mesh) * (centroid - CGAL::ORIGIN);
-    area += PMP::face_area(f, mesh);
-  }
-  const K::Point_3 center = CGAL::ORIGIN + sum / area;
-  double radius = 0.;
-  for(Mesh::Vertex_index v : vertices(mesh))
-    radius = std::max(radius, std::sqrt(CGAL::squared_distance(center, mesh.point(v))));
+  const examples::Extent<K::Point_3> extent = examples::extent_of_soup(soup.points, soup.triangles);
   const auto score = sphere.property_map<Mesh::Vertex_index, double>("v:score").first;
   auto colour = sphere.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-  const double low = worst.score, high = best.empty() ? worst.score : best.front().score;
   for(Mesh::Vertex_index v : vertices(sphere)) {
-    colour[v] = ramp(high > low ? (score[v] - low) / (high - low) : 0.);
-    sphere.point(v) = center + radius * (sphere.point(v) - CGAL::ORIGIN);
+    colour[v] = examples::dark_to_bright(high > low ? (score[v] - low) / (high - low) : 0.);
+    sphere.point(v) = extent.center + extent.radius * (sphere.point(v) - CGAL::ORIGIN);
   }
   std::ostringstream comment;
-  comment << std::setprecision(4) << "viewpoint score S(v) of " << filename << " on a sphere of radius " << radius
-          << " centred at " << center << "; vertex colour: S from dark " << low << " (worst) to bright " << high
-          << " (best)";
-  if(!CGAL::IO::write_PLY(output, sphere, comment.str())) throw std::runtime_error("cannot write " + output);
+  comment << std::setprecision(4) << "viewpoint score S(v) of " << filename << " on a sphere of radius "
+          << extent.radius << " centred at " << extent.center << "; vertex colour: S from dark " << low
+          << " (worst) to bright " << high << " (best)";
+  examples::write_PLY(output, sphere, comment.str());
   std::cout << "\nWrote " << output << ": " << num_vertices(sphere) << " vertices, the score sphere centred on the "
             << "mesh,\n  coloured from dark (worst view) to bright (best view)\n";
+}
+
+int main(int argc, char** argv)
+try {
+  const examples::Command_line_options options(argc, argv);
+  const std::string filename = options.input_file("meshes/bull.off");
+  const std::size_t resolution = options.integer("--resolution", 64), samples = options.integer("--samples", 500000),
+                    seed = options.integer("--seed", 0, 0), views = options.integer("--views", 5);
+  const std::string output = options.text("--output", "best_viewpoint.ply");
+  options.reject_unknown();
+  const Soup soup = examples::read_triangle_soup<K::Point_3>(filename); // any mesh file, repaired as a soup
+
+  // The views are scored by the principal planes: detect them first.
+  CGAL::Real_timer timer;
+  timer.start();
+  const std::vector<ST::Principal_symmetry<K>> symmetries = ST::detect_principal_symmetries_of_triangle_soup(soup.points, soup.triangles,
+    CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples and PRST bins per axis
+                      number_of_samples(samples).       // Monte Carlo samples of the PRST
+                      random_seed(unsigned(seed)));     // the same seed, the same planes
+  std::cout << std::setprecision(3) << symmetries.size() << " principal symmetries (grid " << resolution
+            << "^3) in " << timer.time() << " s:\n";
+  print_planes(symmetries, soup);
+
+  std::vector<ST::Viewpoint<K>> best; // local maxima of S, best first
+  ST::best_viewpoints(symmetries, std::back_inserter(best));
+  const ST::Viewpoint<K> worst = ST::worst_viewpoint(symmetries);
+  print_views(symmetries, best, worst, views);
+  write_score_sphere(symmetries, soup, worst.score, best.empty() ? worst.score : best.front().score, filename, output);
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {

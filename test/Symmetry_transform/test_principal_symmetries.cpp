@@ -444,7 +444,7 @@ TEST(ClosestPoints, ClosestTriangleFieldIsNearTheExactSearchInTheBand)
   shapes.emplace_back("fine ellipsoid", ellipsoid<Surface_mesh>(1., 0.6, 0.35, 5));
   for(const auto& [name, shape] : shapes) {
     const Shape<Surface_mesh> s = moved(shape, random_motion(rng));
-    const STI::Triangle_surface<K> surface(STI::triangles_of_mesh(s.mesh, get(CGAL::vertex_point, s.mesh)), np);
+    const STI::Triangle_surface<K> surface(STI::triangles_of_mesh(s.mesh, CGAL::parameters::default_values()), np);
     const auto& [triangles, exact, field] = std::tie(surface.triangles, surface.matcher, surface.field);
     const double sigma = STI::isp_settings(np, surface.gedt).sigma;
     std::vector<double> excess;
@@ -452,8 +452,8 @@ TEST(ClosestPoints, ClosestTriangleFieldIsNearTheExactSearchInTheBand)
       const Eigen::Vector3d p = sample + sigma * Eigen::Vector3d(gaussian(rng), gaussian(rng), gaussian(rng));
       STI::Triangle_matcher::Hint exact_hint;
       STI::Closest_triangle_field::Hint field_hint;
-      const double d = (p - exact.closest(p, exact_hint, false).first).norm();
-      const double approximate = (p - field.closest(p, field_hint, false).first).norm();
+      const double d = (p - exact.closest(p, exact_hint).first).norm();
+      const double approximate = (p - field.closest(p, field_hint).first).norm();
       ASSERT_GE(approximate, d - 1e-12 * sigma) << name;
       excess.push_back((approximate - d) / sigma);
     }

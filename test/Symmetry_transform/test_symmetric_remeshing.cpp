@@ -15,6 +15,7 @@
 #include <CGAL/Symmetry_transform/remeshing_metrics.h>
 #include <CGAL/Symmetry_transform/symmetric_remeshing.h>
 
+#include "Symmetry_transform_soup_defects.h"
 #include "Symmetry_transform_test_shapes.h"
 
 #include <CGAL/Surface_mesh_approximation/approximate_triangle_mesh.h>
@@ -182,7 +183,7 @@ Mirror_match mirror_match(const Soup& s, const Plane_3& plane, double tolerance)
   return m;
 }
 
-// Defects of the output soup: those of ST::internal::soup_defects(), and triangles with repeated
+// Defects of the output soup: those of st_test::soup_defects(), and triangles with repeated
 // or collinear corners, or twice the same corners, and directed edges shared by triangles.
 struct Soup_defects
 {
@@ -193,7 +194,7 @@ struct Soup_defects
 Soup_defects defects(const Soup& s)
 {
   Soup_defects d;
-  const auto manifold = ST::internal::soup_defects(s.points.size(), s.triangles);
+  const auto manifold = st_test::soup_defects(s.points.size(), s.triangles);
   d.non_manifold_vertices = manifold.non_manifold_vertices;
   d.border_edges = manifold.border_edges;
   std::set<Triangle> seen;

@@ -131,7 +131,7 @@ TEST(ViewpointSelection, CoarseSamplingFindsTheSameExactViews)
 {
   const Symmetries s = three_planes(0.9, 0.6, 0.3);
   std::vector<View> coarse;
-  ST::best_viewpoints(s, std::back_inserter(coarse), CGAL::parameters::number_of_samples(1000));
+  ST::best_viewpoints(s, std::back_inserter(coarse), CGAL::parameters::number_of_directions(1000));
   const std::vector<View> fine = best(s);
   ASSERT_EQ(coarse.size(), fine.size());
   for(std::size_t i = 0; i < fine.size(); ++i) {
@@ -213,8 +213,8 @@ TEST(ViewpointSelection, RejectsBadInput)
   EXPECT_TRUE(throws_with_message<std::invalid_argument>([&] { best(negative); }, "negative"));
   std::vector<View> views;
   EXPECT_TRUE(throws_with_message<std::invalid_argument>(
-    [&] { ST::best_viewpoints(s, std::back_inserter(views), CGAL::parameters::number_of_samples(5)); },
-    "number_of_samples"));
+    [&] { ST::best_viewpoints(s, std::back_inserter(views), CGAL::parameters::number_of_directions(5)); },
+    "number_of_directions"));
   EXPECT_TRUE(throws_with_message<std::invalid_argument>([&] { ST::viewpoint_score_sphere(s, 9); }, "subdivisions"));
 }
 

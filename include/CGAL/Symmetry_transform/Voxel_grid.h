@@ -13,22 +13,21 @@
 #include <stdexcept>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformGridRef
-
-A cube of `n`×`n`×`n` samples of a scalar function of space, centred on the centre of mass
-of a shape and large enough to hold its bounding sphere: this placement does not depend on
-the orientation of the shape, so transforms computed on the grid rotate with the shape.
-
-Sample `(i,j,k)` sits at the centre of its voxel,
-`center() + voxel_size() * (i + 1/2 - n/2, j + 1/2 - n/2, k + 1/2 - n/2)`.
-Values are stored as `double` whatever the number type of the traits (the transforms are
-numerical kernels); `i` varies fastest in `values()`.
-
-\tparam GeomTraits a model of `Kernel`; only `FT`, `Point_3` and their coordinate access are used.
+ * \ingroup PkgSymmetryTransformGridRef
+ *
+ * A cube of `n`×`n`×`n` samples of a scalar function of space, centred on the centre of mass
+ * of a shape and large enough to hold its bounding sphere: this placement does not depend on
+ * the orientation of the shape, so transforms computed on the grid rotate with the shape.
+ *
+ * Sample `(i,j,k)` sits at the centre of its voxel,
+ * `center() + voxel_size() * (i + 1/2 - n/2, j + 1/2 - n/2, k + 1/2 - n/2)`.
+ * Values are stored as `double` whatever the number type of the traits (the transforms are
+ * numerical kernels); `i` varies fastest in `values()`.
+ *
+ * \tparam GeomTraits a model of `Kernel`; only `FT`, `Point_3` and their coordinate access are used.
 */
 template <typename GeomTraits>
 class Voxel_grid
@@ -43,14 +42,14 @@ public:
   Voxel_grid() = default;
 
   /*!
-  Creates a grid of `resolution`³ samples, all set to `value`, over the axis-aligned cube of
-  side `side_length` centred on `center`.
-  \param resolution the number \f$ n \f$ of samples along each axis
-  \param center the centre of the cube, usually the centre of mass of the shape
-  \param radius the radius of the shape the grid represents (the largest distance from `center` to the shape)
-  \param side_length the side of the cube
-  \param value the initial value of every sample
-  \throws std::invalid_argument unless `resolution > 0`, `side_length > 0` and `radius >= 0`.
+ *   Creates a grid of `resolution`³ samples, all set to `value`, over the axis-aligned cube of
+ *   side `side_length` centred on `center`.
+ *   \param resolution the number \f$ n \f$ of samples along each axis
+ *   \param center the centre of the cube, usually the centre of mass of the shape
+ *   \param radius the radius of the shape the grid represents (the largest distance from `center` to the shape)
+ *   \param side_length the side of the cube
+ *   \param value the initial value of every sample
+ *   \throws std::invalid_argument unless `resolution > 0`, `side_length > 0` and `radius >= 0`.
   */
   Voxel_grid(std::size_t resolution, const Point_3& center, FT radius, FT side_length,
              double value = 0.)
@@ -129,15 +128,12 @@ public:
 
   double trilinear_value(double x, double y, double z) const
   {
-    const double h = voxel_size();
-    const double u = (x - origin_[0]) / h - 0.5, v = (y - origin_[1]) / h - 0.5,
-                 w = (z - origin_[2]) / h - 0.5;
-    if(!in_reach(u) || !in_reach(v) || !in_reach(w)) return 0.; // also NaN: far outside the grid
-    const double fu = floor_of(u), fv = floor_of(v), fw = floor_of(w);
-    const long i = long(fu), j = long(fv), k = long(fw);
+    Cell cell;
+    if(!cell_of(x, y, z, cell)) return 0.;
+    const long i = cell.i, j = cell.j, k = cell.k;
     const long n = long(n_);
     if(i < -1 || j < -1 || k < -1 || i >= n || j >= n || k >= n) return 0.;
-    const double a = u - fu, b = v - fv, c = w - fw;
+    const double a = cell.a, b = cell.b, c = cell.c;
     if(i >= 0 && j >= 0 && k >= 0 && i + 1 < n && j + 1 < n && k + 1 < n) {
       const double* s = values_.data() + index(std::size_t(i), std::size_t(j), std::size_t(k));
       const std::size_t sj = n_, sk = n_ * n_;
@@ -161,16 +157,13 @@ public:
   // smoothing of trilinear interpolation costs about 1/(24 sigma^2) (2% at sigma = 1.5 voxels).
   double cubic_value(double x, double y, double z) const
   {
-    const double h = voxel_size();
-    const double u = (x - origin_[0]) / h - 0.5, v = (y - origin_[1]) / h - 0.5,
-                 w = (z - origin_[2]) / h - 0.5;
-    if(!in_reach(u) || !in_reach(v) || !in_reach(w)) return 0.; // also NaN: far outside the grid
-    const double fu = floor_of(u), fv = floor_of(v), fw = floor_of(w);
-    const long i = long(fu), j = long(fv), k = long(fw);
+    Cell cell;
+    if(!cell_of(x, y, z, cell)) return 0.;
+    const long i = cell.i, j = cell.j, k = cell.k;
     const long n = long(n_);
     if(i < -2 || j < -2 || k < -2 || i > n || j > n || k > n) return 0.;
-    std::array<double, 4> wu = catmull_rom_weights(u - fu), wv = catmull_rom_weights(v - fv),
-                          ww = catmull_rom_weights(w - fw);
+    std::array<double, 4> wu = catmull_rom_weights(cell.a), wv = catmull_rom_weights(cell.b),
+                          ww = catmull_rom_weights(cell.c);
     const bool inside = i >= 1 && j >= 1 && k >= 1 && i + 2 < n && j + 2 < n && k + 2 < n;
     double result = 0.;
     for(int c = 0; c < 4; ++c) {
@@ -193,6 +186,26 @@ public:
   /// \endcond
 
 private:
+  // The cell of the sample centres around a point: its lowest sample (i, j, k) and the position
+  // (a, b, c) of the point in it, each in [0, 1).
+  struct Cell
+  {
+    long i, j, k;
+    double a, b, c;
+  };
+
+  // The cell of (x, y, z); false if the point is out of reach of the samples (or NaN).
+  bool cell_of(double x, double y, double z, Cell& cell) const
+  {
+    const double h = voxel_size();
+    const double u = (x - origin_[0]) / h - 0.5, v = (y - origin_[1]) / h - 0.5,
+                 w = (z - origin_[2]) / h - 0.5;
+    if(!in_reach(u) || !in_reach(v) || !in_reach(w)) return false; // also NaN: far outside the grid
+    const double fu = floor_of(u), fv = floor_of(v), fw = floor_of(w);
+    cell = {long(fu), long(fv), long(fw), u - fu, v - fv, w - fw};
+    return true;
+  }
+
   // Whether a continuous sample index can reach a sample (within 3 of the grid): beyond, the
   // value is zero and the index may not even fit in a long.
   bool in_reach(double u) const { return u > -3. && u < double(n_) + 2.; }
@@ -219,7 +232,6 @@ private:
   std::vector<double> values_;
 };
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_VOXEL_GRID_H

@@ -6,77 +6,43 @@
 #define CGAL_SYMMETRY_TRANSFORM_GAUSSIAN_DISTANCE_TRANSFORM_H
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
-#include <CGAL/Symmetry_transform/internal/gaussian_distance_transform_impl.h>
-#include <CGAL/Symmetry_transform/internal/grid_settings.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/grid/gaussian_distance_transform.h>
+#include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformGridRef
-
-Computes the Gaussian Euclidean Distance Transform (GEDT) of a triangle mesh:
-the function \f$ f(x) = \exp(-d(x)^2 / 2\sigma^2) \f$, where \f$ d(x) \f$ is the distance
-from \f$ x \f$ to the surface, sampled on a `Voxel_grid` centred on the area-weighted centre of
-mass and normalised so that the sum of the squared samples is 1.
-
-Distances are exact (closest point on the triangles, through a `CGAL::AABB_tree`) in the band
-of \f$ 3\sigma \f$ around the surface where the function is not negligible; it is zero
-elsewhere. The side of the cube is, by default, the diameter \f$ 2R \f$ of the bounding sphere
-around the centre of mass plus room for that band, so the placement is invariant under rotation.
-Degenerate faces (zero area) are ignored.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the number \f$ n \f$ of samples along each axis of the grid}
-    \cgalParamType{`int`}
-    \cgalParamDefault{64}
-    \cgalParamExtra{at least 8 and more than 12 times the Gaussian width}
-  \cgalParamNEnd
-  \cgalParamNBegin{gaussian_width}
-    \cgalParamDescription{the standard deviation \f$ \sigma \f$ of the Gaussian, in voxels}
-    \cgalParamType{`double`}
-    \cgalParamDefault{1.5}
-  \cgalParamNEnd
-  \cgalParamNBegin{grid_margin}
-    \cgalParamDescription{the side of the cube divided by the diameter of the bounding sphere}
-    \cgalParamType{`double`, at least 1}
-    \cgalParamDefault{\f$ 1/(1 - 6\sigma/n) \f$: the \f$ 3\sigma \f$ band around the bounding sphere fits in the cube}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads that compute distances}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the normalised GEDT on a grid whose `center()` is the centre of mass of the surface
-and whose `radius()` is the largest distance from it to a vertex of a non-degenerate face.
-
-\throws std::invalid_argument if the mesh has no face, a face that is not a triangle, only
-degenerate faces, a coordinate that is NaN or infinite, or if the grid parameters are invalid
-or the grid does not fit in memory.
+ * \ingroup PkgSymmetryTransformGridRef
+ *
+ * Computes the Gaussian Euclidean Distance Transform (GEDT) of a triangle mesh: the function
+ * \f$ f(x) = \exp(-d(x)^2 / 2\sigma^2) \f$, \f$ d(x) \f$ the exact distance from \f$ x \f$ to the
+ * surface, sampled on a `Voxel_grid` centred on the area-weighted centre of mass, zero beyond
+ * \f$ 3\sigma \f$ and normalised to a unit sum of squared samples (\ref SymmetryTransformGEDT,
+ * \ref SymmetryTransformGEDTMethod). Degenerate faces (zero area) are ignored.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the input mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the surface
+ * and whose `radius()` is the largest distance from it to a vertex of a non-degenerate face.
+ *
+ * \throws std::invalid_argument if the mesh has no face, a face that is not a triangle, only
+ * degenerate faces, a coordinate that is NaN or infinite, or if the grid parameters are invalid
+ * or the grid does not fit in memory.
 */
 template <typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -84,44 +50,37 @@ Voxel_grid<typename GetGeomTraits<TriangleMesh, NamedParameters>::type>
 gaussian_distance_transform(const TriangleMesh& tm,
                             const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
 
-  const auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, vpm), np);
+  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, np), np);
 }
 
 /*!
-\ingroup PkgSymmetryTransformGridRef
-
-Computes the Gaussian Euclidean Distance Transform of a point set: as
-`gaussian_distance_transform()`, with \f$ d(x) \f$ the distance to the nearest point (found
-in a `CGAL::Kd_tree`), the grid centred on the mean of the points and its radius the largest
-distance from the mean to a point.
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": `grid_resolution`,
-          `gaussian_width`, `grid_margin`, `number_of_threads` and `geom_traits` as in
-          `gaussian_distance_transform()`, and:
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{point_map}
-    \cgalParamDescription{a property map associating points to the elements of `points`}
-    \cgalParamType{a model of `ReadablePropertyMap` whose value type is `%Point_3`}
-    \cgalParamDefault{`CGAL::Identity_property_map`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the normalised GEDT on a grid whose `center()` is the mean of the points and whose
-`radius()` is the largest distance from it to a point.
-
-\throws std::invalid_argument if the range is empty, all its points coincide, a coordinate is
-NaN or infinite, or if the grid parameters are invalid or the grid does not fit in memory.
+ * \ingroup PkgSymmetryTransformGridRef
+ *
+ * Computes the Gaussian Euclidean Distance Transform of a point set: as
+ * `gaussian_distance_transform()`, with \f$ d(x) \f$ the distance to the nearest point (found
+ * in a `CGAL::Kd_tree`), the grid centred on the mean of the points.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the input points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the normalised GEDT on a grid whose `center()` is the mean of the points and whose
+ * `radius()` is the largest distance from it to a point.
+ *
+ * \throws std::invalid_argument if the range is empty, all its points coincide, a coordinate is
+ * NaN or infinite, or if the grid parameters are invalid or the grid does not fit in memory.
 */
 template <typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -135,13 +94,51 @@ gaussian_distance_transform_of_points(const PointRange& points,
   const std::vector<internal::Dpoint> samples =
     internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
   const internal::Shape_frame frame = internal::frame_of_points(samples);
-  const internal::Grid_settings settings = internal::grid_settings(np, frame.radius);
-  Voxel_grid<GT> grid = internal::empty_grid<GT>(frame, settings);
-  internal::fill_gaussian_distance_transform_of_points(grid, samples, settings);
-  return grid;
+  return internal::gaussian_distance_transform_of_points<GT>(samples, frame, internal::grid_settings(np, frame.radius));
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+/*!
+ * \ingroup PkgSymmetryTransformGridRef
+ *
+ * Computes the Gaussian Euclidean Distance Transform of a triangle soup, as
+ * `gaussian_distance_transform()` does for a mesh: \f$ d(x) \f$ is the distance to the union of
+ * the triangles, the grid is centred on their area-weighted centre of mass. The soup needs no
+ * repair (\ref SymmetryTransformRealWorld): orientation, duplicated or unreferenced points,
+ * non-manifold edges and components do not matter; degenerate triangles (zero area) are ignored.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ *         (as `std::array<std::size_t, 3>`), as `CGAL::Polygon_mesh_processing::sample_triangle_soup()` takes
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the triangles
+ * and whose `radius()` is the largest distance from it to a corner of a non-degenerate triangle.
+ *
+ * \throws std::invalid_argument if a triangle refers to a point out of range or has not three
+ * corners, if there is no triangle or only degenerate ones, if a corner has a NaN or infinite
+ * coordinate, or if the grid parameters are invalid or the grid does not fit in memory.
+*/
+template <typename PointRange, typename TriangleRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+Voxel_grid<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+gaussian_distance_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                                             const NamedParameters& np = parameters::default_values())
+{
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_soup(points, triangles, np), np);
+}
+
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_GAUSSIAN_DISTANCE_TRANSFORM_H

@@ -7,10 +7,10 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
-#include <CGAL/Symmetry_transform/internal/fft.h>
-#include <CGAL/Symmetry_transform/internal/grid_settings.h>
-#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/fft.h>
+#include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 
 #include <Eigen/Dense>
 
@@ -19,20 +19,19 @@
 #include <cmath>
 #include <utility>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformPSTRef
-
-The Point Symmetry Transform (PST) of a function \f$ f \f$ sampled on a `Voxel_grid`: for every
-sample \f$ p \f$ of the grid, the symmetry measure of \f$ f \f$ with respect to the point
-reflection \f$ x \mapsto 2p - x \f$,
-\f$ SM(p) = \sum_x f(x) f(2p - x) / \sum_x f(x)^2 \in [0,1] \f$.
-
-Built by `point_symmetry_transform()`.
-
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformPSTRef
+ *
+ * The Point Symmetry Transform (PST) of a function \f$ f \f$ sampled on a `Voxel_grid`: for every
+ * sample \f$ p \f$ of the grid, the symmetry measure of \f$ f \f$ with respect to the point
+ * reflection \f$ x \mapsto 2p - x \f$,
+ * \f$ SM(p) = \sum_x f(x) f(2p - x) / \sum_x f(x)^2 \in [0,1] \f$.
+ *
+ * Built by `point_symmetry_transform()`.
+ *
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 class Point_symmetry_transform
@@ -59,12 +58,12 @@ public:
   double value(const Point_3& p) const { return grid_.value(p); }
 
   /*!
-  The point of strongest point symmetry. `point_symmetry_transform()` finds it on a grid twice
-  as fine as `grid()` (the self-convolution it computes has a sample at every midpoint of two
-  samples of \f$ f \f$), then moves it by one Newton step on the logarithm of the measure,
-  with the gradient and full Hessian of the 3×3×3 samples around the best one: near a
-  symmetric centre the measure is close to a Gaussian, whose logarithm is quadratic.
-  \returns the centre of symmetry
+ *   The point of strongest point symmetry. `point_symmetry_transform()` finds it on a grid twice
+ *   as fine as `grid()` (the self-convolution it computes has a sample at every midpoint of two
+ *   samples of \f$ f \f$), then moves it by one Newton step on the logarithm of the measure,
+ *   with the gradient and full Hessian of the 3×3×3 samples around the best one: near a
+ *   symmetric centre the measure is close to a Gaussian, whose logarithm is quadratic.
+ *   \returns the centre of symmetry
   */
   const Point_3& center_of_symmetry() const { return center_of_symmetry_; }
 
@@ -75,13 +74,18 @@ private:
 
 namespace internal {
 
+// FFTW's basic interface counts samples in int: the padded grid, (2n)^3 samples, must fit.
+constexpr std::size_t max_point_symmetry_resolution = 512;
+// The logarithms of the samples around a peak are taken of at least this, a positive number.
+constexpr double smallest_logarithm_argument = 1e-300;
+
 // Offset of the maximum of exp(q), q the quadratic through the logarithms of the 27 values
 // sample(di, dj, dk), di, dj, dk in {-1, 0, 1}, around a largest sample; zero if the samples
 // do not curve down, and at most one step along each axis.
 template <typename Sample>
 Eigen::Vector3d newton_step_to_peak(const Sample& sample)
 {
-  auto log_sample = [&](const long* d) { return std::log((std::max)(sample(d[0], d[1], d[2]), 1e-300)); };
+  auto log_sample = [&](const long* d) { return std::log((std::max)(sample(d[0], d[1], d[2]), smallest_logarithm_argument)); };
   const long zero[3] = {0, 0, 0};
   Eigen::Vector3d gradient;
   Eigen::Matrix3d hessian;
@@ -109,30 +113,29 @@ Eigen::Vector3d newton_step_to_peak(const Sample& sample)
 } // namespace internal
 
 /*!
-\ingroup PkgSymmetryTransformPSTRef
-
-Computes the Point Symmetry Transform of a function sampled on a grid, for instance a GEDT
-from `gaussian_distance_transform()`: all the sums \f$ \sum_x f(x) f(2p - x) \f$ at once as
-the self-convolution of \f$ f \f$, by FFT on a grid zero-padded to \f$ (2n)^3 \f$ (no
-wrap-around), in \f$ O(n^3 \log n) \f$ time and \f$ 128\,n^3 \f$ bytes of memory.
-
-\tparam GeomTraits a model of `Kernel`
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"; none is used
-        by this overload, which accepts them so that the overloads on meshes and point sets can
-        pass theirs on
-
-\param f the function, with \f$ n \f$ samples along each axis
-
-\returns the symmetry measure of every sample of `f`, on a grid with the same samples
-
-\throws std::invalid_argument if `f` is zero everywhere, its resolution exceeds 512, or the padded grid does not fit in memory.
+ * \ingroup PkgSymmetryTransformPSTRef
+ *
+ * Computes the Point Symmetry Transform of a function sampled on a grid, for instance a GEDT
+ * from `gaussian_distance_transform()`: all the sums \f$ \sum_x f(x) f(2p - x) \f$ at once as
+ * the self-convolution of \f$ f \f$, by FFT on a grid zero-padded to \f$ (2n)^3 \f$ (no
+ * wrap-around), in \f$ O(n^3 \log n) \f$ time and \f$ 128\,n^3 \f$ bytes of memory.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"; none is used
+ *         by this overload, which accepts them so that the overloads on meshes and point sets can
+ *         pass theirs on
+ *
+ * \param f the function, with \f$ n \f$ samples along each axis
+ *
+ * \returns the symmetry measure of every sample of `f`, on a grid with the same samples
+ *
+ * \throws std::invalid_argument if `f` is zero everywhere, its resolution exceeds 512, or the padded grid does not fit in memory.
 */
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<GeomTraits>& f,
                                                               const NamedParameters& = parameters::default_values())
 {
-  // FFTW's basic interface counts samples in int: (2n)^3 must fit.
-  if(f.resolution() > 512)
+  if(f.resolution() > internal::max_point_symmetry_resolution)
     throw std::invalid_argument("point_symmetry_transform: the resolution must be at most 512");
   const int n = int(f.resolution()), N = 2 * n;
   const std::size_t real_size = std::size_t(N) * N * N, complex_size = std::size_t(N) * N * (N / 2 + 1);
@@ -190,21 +193,27 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
 }
 
 /*!
-\ingroup PkgSymmetryTransformPSTRef
-
-Computes the Point Symmetry Transform of a triangle mesh: its GEDT by
-`gaussian_distance_transform(tm, np)`, then `point_symmetry_transform()` of that grid.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform()`
-
-\returns the Point Symmetry Transform of the GEDT of `tm`
-
-\throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
+ * \ingroup PkgSymmetryTransformPSTRef
+ *
+ * Computes the Point Symmetry Transform of a triangle mesh: its GEDT by
+ * `gaussian_distance_transform(tm, np)`, then `point_symmetry_transform()` of that grid.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the input mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Point Symmetry Transform of the GEDT of `tm`
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Point_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -214,21 +223,28 @@ point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = par
 }
 
 /*!
-\ingroup PkgSymmetryTransformPSTRef
-
-Computes the Point Symmetry Transform of a point set: its GEDT by
-`gaussian_distance_transform_of_points(points, np)`, then `point_symmetry_transform()` of that grid.
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform_of_points()`
-
-\returns the Point Symmetry Transform of the GEDT of `points`
-
-\throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
+ * \ingroup PkgSymmetryTransformPSTRef
+ *
+ * Computes the Point Symmetry Transform of a point set: its GEDT by
+ * `gaussian_distance_transform_of_points(points, np)`, then `point_symmetry_transform()` of that grid.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the input points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Point Symmetry Transform of the GEDT of `points`
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
@@ -237,7 +253,39 @@ point_symmetry_transform_of_points(const PointRange& points, const NamedParamete
   return point_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+/*!
+ * \ingroup PkgSymmetryTransformPSTRef
+ *
+ * Computes the Point Symmetry Transform of a triangle soup: its GEDT by
+ * `gaussian_distance_transform_of_triangle_soup(points, triangles, np)`, then `point_symmetry_transform()` of that grid.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Point Symmetry Transform of the GEDT of the soup
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_triangle_soup()` and the overload on grids.
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+point_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                                          const NamedParameters& np = parameters::default_values())
+{
+  return point_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np);
+}
+
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_POINT_SYMMETRY_TRANSFORM_H

@@ -5,14 +5,16 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H
 #define CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H
 
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
-#include <CGAL/Symmetry_transform/internal/mesh_geom_traits.h>
-#include <CGAL/Symmetry_transform/internal/named_parameters.h>
-#include <CGAL/Symmetry_transform/internal/plane_bins.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_exact.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_io.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_monte_carlo.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
+#include <CGAL/Symmetry_transform/internal/prst/exact.h>
+#include <CGAL/Symmetry_transform/internal/prst/file_format.h>
+#include <CGAL/Symmetry_transform/internal/prst/monte_carlo.h>
 
 #include <algorithm>
 #include <array>
@@ -23,12 +25,11 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-How `reflective_symmetry_transform()` computes the symmetry measures of the bins.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ * How `reflective_symmetry_transform()` computes the symmetry measures of the bins.
 */
 enum class Reflective_symmetry_method {
   /// Monte Carlo sampling of points drawn proportionally to \f$ f \f$, with the estimator given by
@@ -40,8 +41,8 @@ enum class Reflective_symmetry_method {
 };
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-The Monte Carlo estimator used by `Reflective_symmetry_method::MONTE_CARLO`.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ * The Monte Carlo estimator used by `Reflective_symmetry_method::MONTE_CARLO`.
 */
 enum class Monte_carlo_estimator {
   /// The thesis's: both points drawn proportionally to \f$ f \f$, each pair votes
@@ -58,24 +59,24 @@ enum class Monte_carlo_estimator {
 };
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-The Planar Reflective Symmetry Transform (PRST) of a function \f$ f \f$ (usually the GEDT of a
-shape): the symmetry measure
-\f$ SM(\gamma) = \int f(x) f(\gamma(x))\,dx / \int f^2 \in [0,1] \f$ of every plane
-\f$ \gamma \f$, tabulated on \f$ n \times n \times n \f$ bins.
-
-A plane is \f$ \{x : \mathbf{n}\cdot(x - c) = r\} \f$, with \f$ c \f$ the centre of mass of the
-shape and the unit normal
-\f$ \mathbf{n}(\theta,\phi) = (\sin\theta\cos\phi, \sin\theta\sin\phi, \cos\theta) \f$,
-\f$ \theta \in [0,\pi/2] \f$, \f$ \phi \in [0, 2\pi) \f$, \f$ r \in [-R, R] \f$ (\f$ R \f$ the
-radius of the shape). Bin `(i,j,k)` covers
-\f$ [i, i+1)\,\Delta\theta \times [j, j+1)\,\Delta\phi \times (-R + [k, k+1)\,\Delta r) \f$
-with \f$ \Delta\theta = \pi/2n \f$, \f$ \Delta\phi = 2\pi/n \f$, \f$ \Delta r = 2R/n \f$.
-In this parameter space \f$ \phi \f$ wraps around, and a plane on the equator is also
-\f$ (\pi/2, \phi + \pi, -r) \f$.
-
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * The Planar Reflective Symmetry Transform (PRST) of a function \f$ f \f$ (usually the GEDT of a
+ * shape): the symmetry measure
+ * \f$ SM(\gamma) = \int f(x) f(\gamma(x))\,dx / \int f^2 \in [0,1] \f$ of every plane
+ * \f$ \gamma \f$, tabulated on \f$ n \times n \times n \f$ bins.
+ *
+ * A plane is \f$ \{x : \mathbf{n}\cdot(x - c) = r\} \f$, with \f$ c \f$ the centre of mass of the
+ * shape and the unit normal
+ * \f$ \mathbf{n}(\theta,\phi) = (\sin\theta\cos\phi, \sin\theta\sin\phi, \cos\theta) \f$,
+ * \f$ \theta \in [0,\pi/2] \f$, \f$ \phi \in [0, 2\pi) \f$, \f$ r \in [-R, R] \f$ (\f$ R \f$ the
+ * radius of the shape). Bin `(i,j,k)` covers
+ * \f$ [i, i+1)\,\Delta\theta \times [j, j+1)\,\Delta\phi \times (-R + [k, k+1)\,\Delta r) \f$
+ * with \f$ \Delta\theta = \pi/2n \f$, \f$ \Delta\phi = 2\pi/n \f$, \f$ \Delta r = 2R/n \f$.
+ * In this parameter space \f$ \phi \f$ wraps around, and a plane on the equator is also
+ * \f$ (\pi/2, \phi + \pi, -r) \f$.
+ *
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 class Reflective_symmetry_transform
@@ -191,12 +192,12 @@ public:
   }
 
   /*!
-  Writes to `out` every bin of positive value that exceeds those of its 26 neighbours
-  (through the wraps of \f$ \phi \f$, the pole and the equator; along \f$ r \f$ the bins at
-  \f$ \pm R \f$ have fewer neighbours), strongest first, and returns the past-the-end iterator.
-  \tparam OutputIterator an output iterator accepting `Bin`
-  \param out where the bins are written
-  \returns `out` past the last bin written
+ *   Writes to `out` every bin of positive value that exceeds those of its 26 neighbours
+ *   (through the wraps of \f$ \phi \f$, the pole and the equator; along \f$ r \f$ the bins at
+ *   \f$ \pm R \f$ have fewer neighbours), strongest first, and returns the past-the-end iterator.
+ *   \tparam OutputIterator an output iterator accepting `Bin`
+ *   \param out where the bins are written
+ *   \returns `out` past the last bin written
   */
   template <typename OutputIterator>
   OutputIterator local_maxima(OutputIterator out) const
@@ -240,10 +241,7 @@ public:
   /// \throws std::runtime_error if the file cannot be written.
   void save(const std::string& filename) const
   {
-    std::ofstream os(filename, std::ios::binary);
-    if(!os) throw std::runtime_error("Reflective_symmetry_transform: cannot open " + filename + " for writing");
-    save(os);
-    if(!os) throw std::runtime_error("Reflective_symmetry_transform: cannot write " + filename);
+    internal::write_file(filename, "Reflective_symmetry_transform", [this](std::ostream& os) { save(os); });
   }
 
   /// Reads a transform written by `save()`.
@@ -265,9 +263,7 @@ public:
   /// \throws std::runtime_error if the file cannot be opened or does not hold a transform written by `save()`.
   static Reflective_symmetry_transform load(const std::string& filename)
   {
-    std::ifstream is(filename, std::ios::binary);
-    if(!is) throw std::runtime_error("Reflective_symmetry_transform: cannot open " + filename);
-    return load(is);
+    return internal::read_file(filename, "Reflective_symmetry_transform", [](std::istream& is) { return load(is); });
   }
 
   /// \cond SKIP_IN_MANUAL
@@ -277,11 +273,9 @@ public:
 private:
   std::array<double, 3> coordinates(const Plane_3& plane) const
   {
-    const double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()), c = CGAL::to_double(plane.c());
-    const double length = std::sqrt(a * a + b * b + c * c);
-    if(!(length > 0.)) throw std::invalid_argument("Reflective_symmetry_transform: degenerate plane");
+    const internal::Dplane p = internal::to_dplane(plane);
     std::array<double, 3> u;
-    if(!bins_.coordinates({a / length, b / length, c / length}, -CGAL::to_double(plane.d()) / length, u))
+    if(!bins_.coordinates({p.normal[0], p.normal[1], p.normal[2]}, p.offset, u))
       throw std::invalid_argument("Reflective_symmetry_transform: the plane is farther than the radius from the centre");
     return u;
   }
@@ -292,57 +286,31 @@ private:
 };
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-Computes the Planar Reflective Symmetry Transform of a function sampled on a grid, usually
-the GEDT of a shape from `gaussian_distance_transform()`, with as many bins along
-\f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$ as the grid has samples along an axis.
-
-\tparam GeomTraits a model of `Kernel`
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param f the function; its `center()` and `radius()` define the offsets of the planes
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
-
-\returns the transform, with `f.resolution()` bins along each axis, `center()` and `radius()` those of `f`
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{prst_method}
-    \cgalParamDescription{how the bins are computed}
-    \cgalParamType{`CGAL::Symmetry_transform::Reflective_symmetry_method`}
-    \cgalParamDefault{`Reflective_symmetry_method::MONTE_CARLO`}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples: points over all directions for
-                          `STRATIFIED_LINES`, pairs of points for `PAIR_JACOBIAN`, a point and a
-                          plane for `BOUNDED_WEIGHT`}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{monte_carlo_estimator}
-    \cgalParamDescription{the Monte Carlo estimator}
-    \cgalParamType{`CGAL::Symmetry_transform::Monte_carlo_estimator`}
-    \cgalParamDefault{`Monte_carlo_estimator::STRATIFIED_LINES`}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_threads}
-    \cgalParamDescription{the number of threads}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{`std::thread::hardware_concurrency()`}
-  \cgalParamNEnd
-  \cgalParamNBegin{verbose}
-    \cgalParamDescription{whether to print the time taken on `std::cerr`}
-    \cgalParamType{`bool`}
-    \cgalParamDefault{`false`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
-zero, or `number_of_samples` is 0 with the Monte Carlo method.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * Computes the Planar Reflective Symmetry Transform of a function sampled on a grid, usually
+ * the GEDT of a shape from `gaussian_distance_transform()`, with as many bins along
+ * \f$ \theta \f$, \f$ \phi \f$ and \f$ r \f$ as the grid has samples along an axis.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param f the function; its `center()` and `radius()` define the offsets of the planes
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \returns the transform, with `f.resolution()` bins along each axis, `center()` and `radius()` those of `f`
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
+ * zero, or `number_of_samples` is 0 with the Monte Carlo method.
 */
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<GeomTraits>
@@ -352,12 +320,13 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   using parameters::get_parameter;
   const Reflective_symmetry_method method =
     choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
-  const std::size_t pairs = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), 2000000));
+  const std::size_t samples =
+    std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), internal::defaults::monte_carlo_pairs));
   const Monte_carlo_estimator estimator =
     choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
-  const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), 0u));
-  const unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
-                                                     internal::default_number_of_threads()));
+  const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), internal::defaults::random_seed));
+  unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
+                                               internal::default_number_of_threads()));
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
 
   if(f.resolution() % 2 != 0)
@@ -368,13 +337,23 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
 
   const auto start = std::chrono::steady_clock::now();
   Reflective_symmetry_transform<GeomTraits> result(f.resolution(), f.center(), f.radius());
+  threads = (std::max)(1u, threads);
   if(method == Reflective_symmetry_method::EXACT) {
-    internal::exact_reflective_symmetry(f, result.bins(), (std::max)(1u, threads), result.values());
+    internal::exact_reflective_symmetry(f, result.bins(), threads, result.values());
   } else {
-    if(pairs == 0) throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
-    internal::Monte_carlo_reflective_symmetry<GeomTraits>(f, result.bins())
-      .run(internal::Estimator(int(estimator)),
-           pairs, seed, (std::max)(1u, threads), result.values());
+    if(samples == 0) throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
+    const internal::Monte_carlo_reflective_symmetry<GeomTraits> monte_carlo(f, result.bins());
+    switch(estimator) {
+    case Monte_carlo_estimator::PAIR_JACOBIAN:
+      monte_carlo.run_pair_jacobian(samples, seed, threads, result.values());
+      break;
+    case Monte_carlo_estimator::BOUNDED_WEIGHT:
+      monte_carlo.run_bounded_weight(samples, seed, threads, result.values());
+      break;
+    case Monte_carlo_estimator::STRATIFIED_LINES:
+      monte_carlo.run_stratified_lines(samples, seed, threads, result.values());
+      break;
+    }
   }
   if(verbose)
     std::cerr << "reflective_symmetry_transform: " << f.resolution() << "^3 bins, "
@@ -384,23 +363,33 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
 }
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-Computes the Planar Reflective Symmetry Transform of a triangle mesh: its GEDT by
-`gaussian_distance_transform(tm, np)`, then `reflective_symmetry_transform()` of that grid.
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform()` and of `reflective_symmetry_transform()` on grids;
-          `grid_resolution` must be even
-
-\returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
-bins along each axis, centred on the centre of mass of `tm`
-
-\throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * Computes the Planar Reflective Symmetry Transform of a triangle mesh: its GEDT by
+ * `gaussian_distance_transform(tm, np)`, then `reflective_symmetry_transform()` of that grid.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the input mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
+ * bins along each axis, centred on the centre of mass of `tm`
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -410,22 +399,33 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
 }
 
 /*!
-\ingroup PkgSymmetryTransformPRSTRef
-
-Computes the Planar Reflective Symmetry Transform of a point set: its GEDT by
-`gaussian_distance_transform_of_points(points, np)`, then `reflective_symmetry_transform()` of that grid.
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform_of_points()` and of `reflective_symmetry_transform()` on
-          grids; `grid_resolution` must be even
-
-\returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
-
-\throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * Computes the Planar Reflective Symmetry Transform of a point set: its GEDT by
+ * `gaussian_distance_transform_of_points(points, np)`, then `reflective_symmetry_transform()` of that grid.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the input points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
@@ -434,7 +434,44 @@ reflective_symmetry_transform_of_points(const PointRange& points, const NamedPar
   return reflective_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+/*!
+ * \ingroup PkgSymmetryTransformPRSTRef
+ *
+ * Computes the Planar Reflective Symmetry Transform of a triangle soup: its GEDT by
+ * `gaussian_distance_transform_of_triangle_soup(points, triangles, np)`, then `reflective_symmetry_transform()` of that grid.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the Planar Reflective Symmetry Transform of the GEDT of the soup
+ *
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_triangle_soup()` and the overload on grids.
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+reflective_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
+                                               const NamedParameters& np = parameters::default_values())
+{
+  return reflective_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np);
+}
+
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_REFLECTIVE_SYMMETRY_TRANSFORM_H

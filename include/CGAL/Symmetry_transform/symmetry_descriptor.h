@@ -7,12 +7,15 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/matching/descriptor_format.h>
+#include <CGAL/Symmetry_transform/internal/matching/distances.h>
+#include <CGAL/Symmetry_transform/internal/matching/settings.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
-#include <CGAL/Symmetry_transform/internal/reflective_symmetry_io.h>
+
+#include <CGAL/number_type_config.h>
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <fstream>
 #include <istream>
 #include <ostream>
@@ -20,65 +23,27 @@
 #include <string>
 #include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
-
-namespace internal {
-
-// Binary file of a symmetry descriptor:
-//   8 bytes "CGALSDSC", uint32 format version, uint32 byte-order mark 0x01020304, uint64
-//   resolution n, n^3 floats (PRST bins, k fastest), n^3 floats (GEDT samples, i fastest),
-//   uint64 FNV-1a hash of all preceding bytes after the magic.
-constexpr char descriptor_file_magic[8] = {'C', 'G', 'A', 'L', 'S', 'D', 'S', 'C'};
-constexpr std::uint32_t descriptor_file_version = 1;
-
-// sqrt(sum_i w_i sum_{j,k} (a - b)^2 / sum of the weights), w_i = sqrt(sin theta_i): the
-// values of one theta index are n^2 contiguous floats, summed in 8 float lanes (vectorised by
-// the compiler) per theta index, then in double.
-inline double weighted_rms_difference(const float* a, const float* b, std::size_t n, const double* row_weights)
-{
-  const std::size_t row = n * n;
-  double total = 0., weight_sum = 0.;
-  for(std::size_t i = 0; i < n; ++i) {
-    float lanes[8] = {0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f};
-    const float* x = a + i * row;
-    const float* y = b + i * row;
-    std::size_t m = 0;
-    for(; m + 8 <= row; m += 8)
-      for(std::size_t l = 0; l < 8; ++l) {
-        const float d = x[m + l] - y[m + l];
-        lanes[l] += d * d;
-      }
-    double sum = 0.;
-    for(; m < row; ++m) sum += double(x[m] - y[m]) * double(x[m] - y[m]);
-    for(float s : lanes) sum += double(s);
-    total += row_weights[i] * sum;
-    weight_sum += row_weights[i] * double(row);
-  }
-  return std::sqrt(total / weight_sum);
-}
-
-} // namespace internal
+namespace CGAL::Symmetry_transform {
 
 /*!
-\ingroup PkgSymmetryTransformRef
-
-The symmetry descriptor of a shape, for matching (thesis, chapter 4): its Planar Reflective
-Symmetry Transform (PRST) and its Gaussian Euclidean Distance Transform (GEDT), both on
-\f$ n \times n \times n \f$ bins, stored contiguously as `float` so that comparing two
-descriptors reads little memory (two \f$ 32^3 \f$ descriptors: 512 KiB).
-
-The descriptors are compared as computed, in the shapes' own coordinates (the PRST bins are
-measured in the directions of the coordinate axes, the GEDT grid is an axis-aligned cube around
-the centre of mass, scaled to the shape's radius): the shapes must be aligned first, for
-instance each moved by `to_canonical(symmetry_frame(tm))` (see symmetry_alignment.h). Both
-parts are invariant under translation and scaling.
-
-Descriptors are computed by `symmetry_descriptor()` or `symmetry_descriptor_of_points()`,
-compared by `reflective_symmetry_descriptor_distance()`, `gedt_distance()` and `descriptor_distance()`,
-and saved with `save()` so that a collection is indexed once.
-
-\tparam GeomTraits a model of `Kernel`
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The symmetry descriptor of a shape, for matching (thesis, chapter 4): its Planar Reflective
+ * Symmetry Transform (PRST) and its Gaussian Euclidean Distance Transform (GEDT), both on
+ * \f$ n \times n \times n \f$ bins, stored contiguously as `float` so that comparing two
+ * descriptors reads little memory (two \f$ 32^3 \f$ descriptors: 512 KiB).
+ *
+ * The descriptors are compared as computed, in the shapes' own coordinates (the PRST bins are
+ * measured in the directions of the coordinate axes, the GEDT grid is an axis-aligned cube around
+ * the centre of mass, scaled to the shape's radius): the shapes must be aligned first, for
+ * instance each moved by `to_canonical(symmetry_frame(tm))` (see symmetry_alignment.h). Both
+ * parts are invariant under translation and scaling.
+ *
+ * Descriptors are computed by `symmetry_descriptor()` or `symmetry_descriptor_of_points()`,
+ * compared by `reflective_symmetry_descriptor_distance()`, `gedt_distance()` and `descriptor_distance()`,
+ * and saved with `save()` so that a collection is indexed once.
+ *
+ * \tparam GeomTraits a model of `Kernel`
 */
 template <typename GeomTraits>
 class Symmetry_descriptor
@@ -116,33 +81,14 @@ public:
   /// Writes the descriptor in a binary format with a versioned header and a checksum.
   /// Several descriptors may follow each other in a stream.
   /// \param os a stream opened in binary mode; its state tells whether the writing succeeded
-  void save(std::ostream& os) const
-  {
-    internal::Fnv1a_hash hash;
-    auto put = [&](const void* data, std::size_t size) {
-      os.write(static_cast<const char*>(data), std::streamsize(size));
-      hash.add(data, size);
-    };
-    os.write(internal::descriptor_file_magic, sizeof(internal::descriptor_file_magic));
-    const std::uint64_t n = n_;
-    put(&internal::descriptor_file_version, sizeof(internal::descriptor_file_version));
-    put(&internal::prst_byte_order_mark, sizeof(internal::prst_byte_order_mark));
-    put(&n, sizeof(n));
-    put(prst_.data(), sizeof(float) * prst_.size());
-    put(gedt_.data(), sizeof(float) * gedt_.size());
-    const std::uint64_t checksum = hash.value();
-    os.write(reinterpret_cast<const char*>(&checksum), sizeof(checksum));
-  }
+  void save(std::ostream& os) const { internal::write_descriptor(os, n_, prst_, gedt_); }
 
   /// Writes the descriptor to the file `filename`, in the format of `save(std::ostream&) const`.
   /// \param filename the name of the file, created or overwritten
   /// \throws std::runtime_error if the file cannot be written.
   void save(const std::string& filename) const
   {
-    std::ofstream os(filename, std::ios::binary);
-    if(!os) throw std::runtime_error("Symmetry_descriptor: cannot open " + filename + " for writing");
-    save(os);
-    if(!os) throw std::runtime_error("Symmetry_descriptor: cannot write " + filename);
+    internal::write_file(filename, "Symmetry_descriptor", [this](std::ostream& os) { save(os); });
   }
 
   /// Reads a descriptor written by `save()`.
@@ -151,36 +97,8 @@ public:
   /// \throws std::runtime_error if the stream does not hold such a descriptor, is truncated or corrupt.
   static Symmetry_descriptor load(std::istream& is)
   {
-    const std::string what = "Symmetry_descriptor::load: ";
-    internal::Fnv1a_hash hash;
-    auto get = [&](void* data, std::size_t size) {
-      if(!is.read(static_cast<char*>(data), std::streamsize(size)))
-        throw std::runtime_error(what + "the file is truncated");
-      hash.add(data, size);
-    };
-    char magic[sizeof(internal::descriptor_file_magic)];
-    if(!is.read(magic, sizeof(magic)) || std::memcmp(magic, internal::descriptor_file_magic, sizeof(magic)) != 0)
-      throw std::runtime_error(what + "not a symmetry descriptor file (bad signature)");
-    std::uint32_t version = 0, mark = 0;
-    get(&version, sizeof(version));
-    if(version != internal::descriptor_file_version)
-      throw std::runtime_error(what + "unsupported file format version " + std::to_string(version) +
-                               " (this library reads version " + std::to_string(internal::descriptor_file_version) + ")");
-    get(&mark, sizeof(mark));
-    if(mark != internal::prst_byte_order_mark) throw std::runtime_error(what + "the file was written with another byte order");
-    std::uint64_t n = 0;
-    get(&n, sizeof(n));
-    if(n == 0 || n % 2 != 0 || n > 1024) throw std::runtime_error(what + "corrupt header (resolution " + std::to_string(n) + ")");
     Symmetry_descriptor result;
-    result.n_ = std::size_t(n);
-    result.prst_.resize(result.n_ * result.n_ * result.n_);
-    result.gedt_.resize(result.prst_.size());
-    get(result.prst_.data(), sizeof(float) * result.prst_.size());
-    get(result.gedt_.data(), sizeof(float) * result.gedt_.size());
-    std::uint64_t checksum = 0;
-    if(!is.read(reinterpret_cast<char*>(&checksum), sizeof(checksum)))
-      throw std::runtime_error(what + "the file is truncated");
-    if(checksum != hash.value()) throw std::runtime_error(what + "the file is corrupt (checksum mismatch)");
+    result.n_ = internal::read_descriptor(is, result.prst_, result.gedt_);
     result.compute_weights();
     return result;
   }
@@ -191,9 +109,7 @@ public:
   /// \throws std::runtime_error if the file cannot be opened or does not hold a descriptor written by `save()`.
   static Symmetry_descriptor load(const std::string& filename)
   {
-    std::ifstream is(filename, std::ios::binary);
-    if(!is) throw std::runtime_error("Symmetry_descriptor: cannot open " + filename);
-    return load(is);
+    return internal::read_file(filename, "Symmetry_descriptor", [](std::istream& is) { return load(is); });
   }
 
   /// \cond SKIP_IN_MANUAL
@@ -215,42 +131,21 @@ private:
   std::vector<double> weights_;
 };
 
-namespace internal {
-
-template <typename GT>
-void check_same_resolution(const Symmetry_descriptor<GT>& a, const Symmetry_descriptor<GT>& b, const char* function)
-{
-  if(a.resolution() != b.resolution())
-    throw std::invalid_argument(std::string(function) + ": the descriptors have different resolutions (" +
-                                std::to_string(a.resolution()) + " and " + std::to_string(b.resolution()) + ")");
-  if(a.resolution() == 0) throw std::invalid_argument(std::string(function) + ": empty descriptor");
-}
-
-// The named parameters with grid_resolution set: the one given, 32 by default.
-template <typename NamedParameters>
-auto descriptor_parameters(const NamedParameters& np)
-{
-  const int n = int(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_grid_resolution), 32));
-  return np.grid_resolution(n);
-}
-
-} // namespace internal
-
 /*!
-\ingroup PkgSymmetryTransformRef
-
-The distance between the PRSTs of two descriptors (thesis, section 4.2): the L² difference of
-the bin values, each bin weighted by \f$ \sqrt{\sin\theta} \f$ (\f$ \theta \f$ at its centre,
-the angle of the plane normals from the \f$ z \f$ axis) so that every direction of normals
-counts as much as its area on the sphere of directions would make it count, on a square root:
-\f[ d_{SM}(a, b) = \sqrt{\frac{\sum_{\text{bins}} \sqrt{\sin\theta}\,(SM_a - SM_b)^2}{\sum_{\text{bins}} \sqrt{\sin\theta}}}. \f]
-Normalised by the sum of the weights, it is the weighted root mean square of the differences
-of the symmetry measures (in \f$ [0, 1] \f$): a number without unit, comparable across
-resolutions. Symmetric, zero for equal descriptors, and it satisfies the triangle inequality.
-
-\param a,b two descriptors of the same resolution
-\returns \f$ d_{SM}(a, b) \in [0, 1] \f$
-\throws std::invalid_argument if the resolutions differ or the descriptors are empty.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The distance between the PRSTs of two descriptors (thesis, section 4.2): the L² difference of
+ * the bin values, each bin weighted by \f$ \sqrt{\sin\theta} \f$ (\f$ \theta \f$ at its centre,
+ * the angle of the plane normals from the \f$ z \f$ axis) so that every direction of normals
+ * counts as much as its area on the sphere of directions would make it count, on a square root:
+ * \f[ d_{SM}(a, b) = \sqrt{\frac{\sum_{\text{bins}} \sqrt{\sin\theta}\,(SM_a - SM_b)^2}{\sum_{\text{bins}} \sqrt{\sin\theta}}}. \f]
+ * Normalised by the sum of the weights, it is the weighted root mean square of the differences
+ * of the symmetry measures (in \f$ [0, 1] \f$): a number without unit, comparable across
+ * resolutions. Symmetric, zero for equal descriptors, and it satisfies the triangle inequality.
+ *
+ * \param a,b two descriptors of the same resolution
+ * \returns \f$ d_{SM}(a, b) \in [0, 1] \f$
+ * \throws std::invalid_argument if the resolutions differ or the descriptors are empty.
 */
 template <typename GeomTraits>
 double reflective_symmetry_descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_descriptor<GeomTraits>& b)
@@ -261,16 +156,16 @@ double reflective_symmetry_descriptor_distance(const Symmetry_descriptor<GeomTra
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
-
-The distance between the GEDTs of two descriptors: the L² norm of the difference of the
-samples, \f$ d_{G}(a, b) = \sqrt{\sum (f_a - f_b)^2} \f$. Each GEDT having unit L² norm and no
-negative sample, \f$ d_G \in [0, \sqrt 2] \f$, without unit. Symmetric, zero for equal
-descriptors, and it satisfies the triangle inequality.
-
-\param a,b two descriptors of the same resolution
-\returns \f$ d_G(a, b) \f$
-\throws std::invalid_argument if the resolutions differ or the descriptors are empty.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The distance between the GEDTs of two descriptors: the L² norm of the difference of the
+ * samples, \f$ d_{G}(a, b) = \sqrt{\sum (f_a - f_b)^2} \f$. Each GEDT having unit L² norm and no
+ * negative sample, \f$ d_G \in [0, \sqrt 2] \f$, without unit. Symmetric, zero for equal
+ * descriptors, and it satisfies the triangle inequality.
+ *
+ * \param a,b two descriptors of the same resolution
+ * \returns \f$ d_G(a, b) \f$
+ * \throws std::invalid_argument if the resolutions differ or the descriptors are empty.
 */
 template <typename GeomTraits>
 double gedt_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_descriptor<GeomTraits>& b)
@@ -284,17 +179,17 @@ double gedt_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_de
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
-
-The combined distance of two descriptors (thesis, section 4.2): the product
-`reflective_symmetry_descriptor_distance(a, b) * gedt_distance(a, b)`, small only when both the symmetries
-and the shapes are close. Symmetric and zero for equal descriptors; it is not a metric (no
-triangle inequality). Comparing two \f$ 32^3 \f$ descriptors takes a few microseconds
-(benchmark_descriptor, RESULTS.md).
-
-\param a,b two descriptors of the same resolution
-\returns \f$ d_{SM}(a, b)\, d_G(a, b) \f$
-\throws std::invalid_argument if the resolutions differ or the descriptors are empty.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * The combined distance of two descriptors (thesis, section 4.2): the product
+ * `reflective_symmetry_descriptor_distance(a, b) * gedt_distance(a, b)`, small only when both the symmetries
+ * and the shapes are close. Symmetric and zero for equal descriptors; it is not a metric (no
+ * triangle inequality). Comparing two \f$ 32^3 \f$ descriptors takes a few microseconds
+ * (benchmark_descriptor, RESULTS.md).
+ *
+ * \param a,b two descriptors of the same resolution
+ * \returns \f$ d_{SM}(a, b)\, d_G(a, b) \f$
+ * \throws std::invalid_argument if the resolutions differ or the descriptors are empty.
 */
 template <typename GeomTraits>
 double descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_descriptor<GeomTraits>& b)
@@ -303,51 +198,33 @@ double descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symme
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
-
-Computes the symmetry descriptor of a triangle mesh: its GEDT by
-`gaussian_distance_transform(tm, np)` and the PRST of that GEDT by
-`reflective_symmetry_transform()`, both with `grid_resolution` bins along each axis. The mesh
-should be aligned first (see `Symmetry_descriptor`).
-
-\tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param tm the input mesh
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform()` and of `reflective_symmetry_transform()`, among which
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the number \f$ n \f$ of bins along each axis of the PRST and of the GEDT; even}
-    \cgalParamType{`int`}
-    \cgalParamDefault{32}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples of the PRST}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{random_seed}
-    \cgalParamDescription{the seed of the Monte Carlo samples: equal seeds and thread counts give identical descriptors}
-    \cgalParamType{`unsigned int`}
-    \cgalParamDefault{0}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{a property map associating points to the vertices of `tm`}
-    \cgalParamType{a class model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-                   as key type and `%Point_3` as value type}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{geom_traits}
-    \cgalParamDescription{an instance of a geometric traits class}
-    \cgalParamType{a class model of `Kernel`}
-    \cgalParamDefault{a \cgal Kernel deduced from the point type, using `CGAL::Kernel_traits`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the descriptor of `tm`
-\throws std::invalid_argument as `gaussian_distance_transform()` and `reflective_symmetry_transform()`.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * Computes the symmetry descriptor of a triangle mesh: its GEDT by
+ * `gaussian_distance_transform(tm, np)` and the PRST of that GEDT by
+ * `reflective_symmetry_transform()`, both with `grid_resolution` bins along each axis. The mesh
+ * should be aligned first (see `Symmetry_descriptor`).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the input mesh
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{32,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the descriptor of `tm`
+ * \throws std::invalid_argument as `gaussian_distance_transform()` and `reflective_symmetry_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_descriptor<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
@@ -360,39 +237,31 @@ symmetry_descriptor(const TriangleMesh& tm, const NamedParameters& np = paramete
 }
 
 /*!
-\ingroup PkgSymmetryTransformRef
-
-Computes the symmetry descriptor of a point set, as `symmetry_descriptor()` does for a mesh:
-its GEDT by `gaussian_distance_transform_of_points(points, np)` and the PRST of that GEDT.
-
-\tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-
-\param points the input points
-\param np an optional sequence of \ref bgl_namedparameters "Named Parameters": those of
-          `gaussian_distance_transform_of_points()` and of `reflective_symmetry_transform()`, among which
-
-\cgalNamedParamsBegin
-  \cgalParamNBegin{grid_resolution}
-    \cgalParamDescription{the number \f$ n \f$ of bins along each axis of the PRST and of the GEDT; even}
-    \cgalParamType{`int`}
-    \cgalParamDefault{32}
-  \cgalParamNEnd
-  \cgalParamNBegin{number_of_samples}
-    \cgalParamDescription{the number of Monte Carlo samples of the PRST}
-    \cgalParamType{`std::size_t`}
-    \cgalParamDefault{2,000,000}
-  \cgalParamNEnd
-  \cgalParamNBegin{point_map}
-    \cgalParamDescription{a property map associating points to the elements of `points`}
-    \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the
-                   iterator of `PointRange` and whose value type is `geom_traits::Point_3`}
-    \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-
-\returns the descriptor of `points`
-\throws std::invalid_argument as `gaussian_distance_transform_of_points()` and `reflective_symmetry_transform()`.
+ * \ingroup PkgSymmetryTransformMatchingRef
+ *
+ * Computes the symmetry descriptor of a point set, as `symmetry_descriptor()` does for a mesh:
+ * its GEDT by `gaussian_distance_transform_of_points(points, np)` and the PRST of that GEDT.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the input points
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamsGrid{32,at least 8 and more than 12 times the Gaussian width; even}
+ *   \cgalParamThreads{the number of threads}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ *   \cgalParamPrstMethod
+ *   \cgalParamMonteCarloSamples
+ *   \cgalParamMonteCarloEstimator
+ *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
+ *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ * \cgalNamedParamsEnd
+ *
+ * \returns the descriptor of `points`
+ * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and `reflective_symmetry_transform()`.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 Symmetry_descriptor<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
@@ -404,7 +273,6 @@ symmetry_descriptor_of_points(const PointRange& points, const NamedParameters& n
     reflective_symmetry_transform(gedt, params), gedt);
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_SYMMETRY_DESCRIPTOR_H

@@ -6,14 +6,22 @@
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_MEASURE_H
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/sampled_distances.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/number_utils.h>
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
-namespace CGAL {
-namespace Symmetry_transform {
+namespace CGAL::Symmetry_transform {
 
 namespace internal {
 
@@ -40,30 +48,73 @@ double symmetry_measure_of_reflection(const Voxel_grid<GT>& f, const Reflection&
   return dot / norm;
 }
 
+
+// The symmetry distance error (symmetry_distance_error()): the mean of the distances `d` over
+// the diagonal of the bounding box `box` of the input.
+inline double mean_over_diagonal(const std::vector<double>& d, const CGAL::Bbox_3& box)
+{
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  check_radius(diagonal);
+  double sum = 0.;
+  for(double x : d) sum += x;
+  return sum / double(d.size()) / diagonal;
+}
+
+// On triangles: `number_of_points_on_faces` area-uniform samples, reflected, their distances to
+// the triangles (closest points in the AABB tree).
+template <typename NamedParameters>
+double symmetry_distance_error_of_triangles(const std::vector<Dtriangle>& triangles, const Dplane& mirror,
+                                            const NamedParameters& np)
+{
+  const std::vector<double> d = distances_to(metric_samples(triangles, np),
+                                             [&mirror](const Eigen::Vector3d& p) { return mirror.reflect(p); }, triangles,
+                                             metric_threads(np));
+  return mean_over_diagonal(d, CGAL::bbox_3(triangles.begin(), triangles.end()));
+}
+
+// On a point set: a seeded random subset of `number_of_points_on_faces` points (all if fewer),
+// reflected, their distances to the nearest point of the set.
+template <typename NamedParameters>
+double symmetry_distance_error_of_point_set(const std::vector<Dpoint>& points, const Dplane& mirror,
+                                            const NamedParameters& np)
+{
+  const std::size_t count = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_points_on_faces),
+                                                         defaults::metric_samples);
+  const unsigned seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), defaults::random_seed);
+  const std::vector<Eigen::Vector3d> samples = point_samples(points, Refinement_sampling{count, seed});
+  const Nearest_point nearest(points);
+  std::vector<double> d(samples.size());
+  parallel_for(samples.size(), metric_threads(np), [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end; ++i) d[i] = std::sqrt(nearest(mirror.reflect(samples[i])).squared_distance);
+  });
+  return mean_over_diagonal(d, CGAL::bbox_3(points.begin(), points.end()));
+}
+
 } // namespace internal
 
 /*!
-\ingroup PkgSymmetryTransformMeasureRef
-
-Symmetry measure of a sampled function \f$ f \f$ with respect to the reflection \f$ \gamma \f$
-through `plane`, evaluated directly on the grid:
-\f$ SM(\gamma) = \sum_x f(x)\, f(\gamma(x)) / \sum_x f(x)^2 \f$, the sum running over the
-samples and \f$ f(\gamma(x)) \f$ interpolated with cubic (Catmull-Rom) splines.
-
-For a non-negative \f$ f \f$, such as a Gaussian distance transform, it lies in \f$ [0,1] \f$:
-1 for a perfect symmetry (up to interpolation error, below \f$ 10^{-3} \f$ for a GEDT of
-width 1.5 voxels), lower the less symmetric \f$ f \f$ is. It is the quantity the
-reflective symmetry transform tabulates for all planes; use this function to measure a
-given plane exactly, in \f$ O(n^3) \f$.
-
-\tparam GeomTraits a model of `Kernel`
-
-\param f the function, for instance a GEDT from `gaussian_distance_transform()`
-\param plane the plane of the reflection; its orientation does not matter
-
-\returns \f$ SM(\gamma) \f$
-
-\throws std::invalid_argument if `plane` is degenerate or `f` is zero everywhere.
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * Symmetry measure of a sampled function \f$ f \f$ with respect to the reflection \f$ \gamma \f$
+ * through `plane`, evaluated directly on the grid:
+ * \f$ SM(\gamma) = \sum_x f(x)\, f(\gamma(x)) / \sum_x f(x)^2 \f$, the sum running over the
+ * samples and \f$ f(\gamma(x)) \f$ interpolated with cubic (Catmull-Rom) splines.
+ *
+ * For a non-negative \f$ f \f$, such as a Gaussian distance transform, it lies in \f$ [0,1] \f$:
+ * 1 for a perfect symmetry (up to interpolation error, below \f$ 10^{-3} \f$ for a GEDT of
+ * width 1.5 voxels), lower the less symmetric \f$ f \f$ is. It is the quantity the
+ * reflective symmetry transform tabulates for all planes; use this function to measure a
+ * given plane exactly, in \f$ O(n^3) \f$.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ *
+ * \param f the function, for instance a GEDT from `gaussian_distance_transform()`
+ * \param plane the plane of the reflection; its orientation does not matter
+ *
+ * \returns \f$ SM(\gamma) \f$
+ *
+ * \throws std::invalid_argument if `plane` is degenerate or `f` is zero everywhere.
 */
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Plane_3& plane)
@@ -81,20 +132,20 @@ double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTrai
 }
 
 /*!
-\ingroup PkgSymmetryTransformMeasureRef
-
-Symmetry measure of a sampled function \f$ f \f$ with respect to the point reflection
-\f$ x \mapsto 2p - x \f$ through `center`, evaluated directly on the grid as in
-`symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`.
-
-\tparam GeomTraits a model of `Kernel`
-
-\param f the function
-\param center the centre \f$ p \f$ of the point reflection
-
-\returns \f$ \sum_x f(x)\, f(2p - x) / \sum_x f(x)^2 \f$
-
-\throws std::invalid_argument if `f` is zero everywhere.
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * Symmetry measure of a sampled function \f$ f \f$ with respect to the point reflection
+ * \f$ x \mapsto 2p - x \f$ through `center`, evaluated directly on the grid as in
+ * `symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ *
+ * \param f the function
+ * \param center the centre \f$ p \f$ of the point reflection
+ *
+ * \returns \f$ \sum_x f(x)\, f(2p - x) / \sum_x f(x)^2 \f$
+ *
+ * \throws std::invalid_argument if `f` is zero everywhere.
 */
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Point_3& center)
@@ -106,22 +157,144 @@ double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTrai
 }
 
 /*!
-\ingroup PkgSymmetryTransformMeasureRef
-
-The symmetry transform's value \f$ \sqrt{(1 + SM)/2} \f$ as defined in the thesis
-(Equation 3.1.1), from a symmetry measure \f$ SM \f$. It is a monotone function of
-\f$ SM \f$: thresholds and comparisons in this package use \f$ SM \f$ itself.
-
-\param symmetry_measure a symmetry measure \f$ SM \f$, in \f$ [-1, 1] \f$
-
-\returns \f$ \sqrt{(1 + SM)/2} \f$, in \f$ [0, 1] \f$
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * The symmetry transform's value \f$ \sqrt{(1 + SM)/2} \f$ as defined in the thesis
+ * (Equation 3.1.1), from a symmetry measure \f$ SM \f$. It is a monotone function of
+ * \f$ SM \f$: thresholds and comparisons in this package use \f$ SM \f$ itself.
+ *
+ * \param symmetry_measure a symmetry measure \f$ SM \f$, in \f$ [-1, 1] \f$
+ *
+ * \returns \f$ \sqrt{(1 + SM)/2} \f$, in \f$ [0, 1] \f$
 */
 inline double symmetry_transform_value(double symmetry_measure)
 {
   return std::sqrt((1. + symmetry_measure) / 2.);
 }
 
-} // namespace Symmetry_transform
-} // namespace CGAL
+/*!
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * The symmetry distance error (SDE) of a triangle mesh with respect to the reflection through
+ * `plane`, the measure that learning methods of symmetry detection report (PRS-Net, E3Sym): the
+ * mean distance from the mirror images of area-uniform random samples of the surface to the
+ * surface, divided by the diagonal of the bounding box of the mesh,
+ * \f[ SDE = \frac{1}{N\,D} \sum_{i=1}^{N} d(\gamma(x_i), S), \f]
+ * \f$ x_i \f$ the samples, \f$ \gamma \f$ the reflection, \f$ d(\cdot, S) \f$ the exact distance
+ * to the triangles (closest points in an AABB tree) and \f$ D \f$ the diagonal of the axis-aligned
+ * bounding box of the non-degenerate faces. 0 for an exact symmetry (up to rounding); about
+ * \f$ \theta\, c(a^2 + b^2) / ((ab + bc + ca)\, D) \f$ for a box of half-sides \f$ a, b, c \f$ and
+ * its plane \f$ x = 0 \f$ turned by a small angle \f$ \theta \f$ about the \f$ z \f$ axis; invariant
+ * under rigid motions and scaling. The samples are seeded: the result is deterministic for a seed,
+ * and its sampling error falls as \f$ 1/\sqrt{N} \f$ (\ref SymmetryTransformMeasureSDE).
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param tm the mesh
+ * \param plane the plane of reflection; its orientation does not matter
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamDistanceSamples{the number \f$ N \f$ of surface samples}
+ *   \cgalParamRandomSeed{the seed of the samples: the result is deterministic for a seed}
+ *   \cgalParamThreads{the threads that match the reflected samples to their closest points (the result does not depend on it)}
+ *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the SDE, a fraction of the diagonal (0.01: 1 % of it).
+ * \throws std::invalid_argument if `plane` is degenerate, the mesh has no face, a face that is not
+ * a triangle, only degenerate faces, or a NaN or infinite coordinate.
+*/
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+double symmetry_distance_error(const TriangleMesh& tm,
+                               const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3& plane,
+                               const NamedParameters& np = parameters::default_values())
+{
+  return internal::symmetry_distance_error_of_triangles(internal::triangles_of_mesh(tm, np), internal::to_dplane(plane), np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * The symmetry distance error of a triangle soup, as `symmetry_distance_error()` defines it for a
+ * mesh, with the distances to the union of the triangles and the bounding box of the
+ * non-degenerate ones. The soup needs no repair; a triangle given twice is sampled twice as often.
+ *
+ * \tparam PointRange a model of `RandomAccessRange` whose value type is the key type of the point map
+ * \tparam TriangleRange a model of `Range` whose value type is a range of three indices into `points`
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points of the soup
+ * \param triangles the triangles, as indices into `points`
+ * \param plane the plane of reflection; its orientation does not matter
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamDistanceSamples{the number \f$ N \f$ of surface samples}
+ *   \cgalParamRandomSeed{the seed of the samples: the result is deterministic for a seed}
+ *   \cgalParamThreads{the threads that match the reflected samples to their closest points (the result does not depend on it)}
+ *   \cgalParamPointMap
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the SDE, a fraction of the diagonal.
+ * \throws std::invalid_argument if `plane` is degenerate, or on the bad soups of
+ * `gaussian_distance_transform_of_triangle_soup()`.
+*/
+template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
+double symmetry_distance_error_of_triangle_soup(
+  const PointRange& points, const TriangleRange& triangles,
+  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  const NamedParameters& np = parameters::default_values())
+{
+  return internal::symmetry_distance_error_of_triangles(internal::triangles_of_soup(points, triangles, np),
+                                                        internal::to_dplane(plane), np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * The symmetry distance error of a point set: as `symmetry_distance_error()`, with the points
+ * themselves as samples (a seeded random subset of \f$ N \f$ of them, all if there are fewer) and
+ * the distance from a mirror image to the point set, that is to the nearest point
+ * (`CGAL::Kd_tree`), over the diagonal of the bounding box of the points. The nearest point is
+ * not the surface: even for an exact symmetry the SDE is then about the distance from a point of
+ * the surface to the nearest sample, unless the point set itself is symmetric (every mirror image
+ * a point of the set).
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+ *
+ * \param points the points
+ * \param plane the plane of reflection; its orientation does not matter
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ *
+ * \cgalNamedParamsBegin
+ *   \cgalParamDistanceSamples{the number \f$ N \f$ of points reflected}
+ *   \cgalParamRandomSeed{the seed of the subset of the points: the result is deterministic for a seed}
+ *   \cgalParamThreads{the threads that look for the nearest points (the result does not depend on it)}
+ *   \cgalParamPointMap
+ *   \cgalParamNormalMap{not read: the distance is to the nearest point}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ *
+ * \returns the SDE, a fraction of the diagonal.
+ * \throws std::invalid_argument if `plane` is degenerate, the range is empty, all its points
+ * coincide, or a coordinate is NaN or infinite.
+*/
+template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+double symmetry_distance_error_of_points(
+  const PointRange& points,
+  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  const NamedParameters& np = parameters::default_values())
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  return internal::symmetry_distance_error_of_point_set(internal::points_of_range(points, NP_helper::get_const_point_map(points, np)),
+                                                        internal::to_dplane(plane), np);
+}
+
+} // namespace CGAL::Symmetry_transform
 
 #endif // CGAL_SYMMETRY_TRANSFORM_SYMMETRY_MEASURE_H

@@ -1,0 +1,93 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_GEOMETRY_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_GEOMETRY_H
+
+// The numerical layer's geometry: plain double points (CGAL's Simple_cartesian<double>) and
+// Eigen vectors, its one plane type, and the conversions to and from the user's kernel, which
+// all go through CGAL::Cartesian_converter. Whatever the user's kernel (Epick, Epeck, ...), the
+// transforms and refinements compute in double precision; its traits name the result types.
+
+#include <CGAL/Cartesian_converter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace CGAL::Symmetry_transform::internal {
+
+typedef CGAL::Simple_cartesian<double> Dkernel;
+typedef Dkernel::Point_3 Dpoint;
+typedef Dkernel::Vector_3 Dvector;
+typedef Dkernel::Triangle_3 Dtriangle;
+
+inline Eigen::Vector3d to_eigen(const Dpoint& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+inline Dpoint to_dpoint(const Eigen::Vector3d& p) { return Dpoint(p.x(), p.y(), p.z()); }
+
+// The plane {x : normal . x = offset}, normal of unit length: the one plane type inside the
+// package (CGAL's Plane_3 a x + b y + c z + d = 0 has normal (a, b, c) / |(a, b, c)| and
+// offset -d / |(a, b, c)|).
+struct Dplane
+{
+  Eigen::Vector3d normal;
+  double offset;
+
+  Eigen::Vector3d reflect(const Eigen::Vector3d& p) const { return p - 2. * (normal.dot(p) - offset) * normal; }
+  double signed_distance(const Eigen::Vector3d& p) const { return normal.dot(p) - offset; }
+};
+
+// A point of any kernel in double precision; throws on a NaN or infinite coordinate.
+template <typename Point>
+Dpoint to_dpoint(const Point& p)
+{
+  const Dpoint q = CGAL::Cartesian_converter<typename CGAL::Kernel_traits<Point>::Kernel, Dkernel>()(p);
+  if(!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()))
+    throw std::invalid_argument("Symmetry_transform: the input has a NaN or infinite coordinate");
+  return q;
+}
+
+// A plane of any kernel as a Dplane; throws if it is degenerate (zero or non-finite normal or offset).
+template <typename Plane>
+Dplane to_dplane(const Plane& plane)
+{
+  const Dkernel::Plane_3 p = CGAL::Cartesian_converter<typename CGAL::Kernel_traits<Plane>::Kernel, Dkernel>()(plane);
+  const Eigen::Vector3d n(p.a(), p.b(), p.c());
+  const double length = n.norm();
+  if(!(length > 0.) || !std::isfinite(length) || !std::isfinite(p.d()))
+    throw std::invalid_argument("Symmetry_transform: degenerate plane (zero or non-finite normal or offset)");
+  return {n / length, -p.d() / length};
+}
+
+// The results in the user's kernel GT.
+template <typename GT>
+typename GT::Plane_3 to_plane(const Dplane& p)
+{
+  return CGAL::Cartesian_converter<Dkernel, GT>()(Dkernel::Plane_3(p.normal[0], p.normal[1], p.normal[2], -p.offset));
+}
+
+template <typename GT>
+typename GT::Point_3 to_point(const Eigen::Vector3d& p)
+{
+  return CGAL::Cartesian_converter<Dkernel, GT>()(to_dpoint(p));
+}
+
+template <typename GT>
+typename GT::Point_3 to_point(const Dpoint& p)
+{
+  return CGAL::Cartesian_converter<Dkernel, GT>()(p);
+}
+
+template <typename GT>
+typename GT::Vector_3 to_vector(const Eigen::Vector3d& v)
+{
+  return CGAL::Cartesian_converter<Dkernel, GT>()(Dvector(v.x(), v.y(), v.z()));
+}
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_GEOMETRY_H

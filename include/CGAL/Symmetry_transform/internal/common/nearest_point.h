@@ -1,0 +1,77 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_NEAREST_POINT_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_NEAREST_POINT_H
+
+// The nearest of a set of points to a query, in a CGAL::Kd_tree: the one Kd-tree of the package
+// (the GEDT of a point set, ISP on a point set, the mirror faces of the remeshing).
+
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
+
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL::Symmetry_transform::internal {
+
+// Queries are thread-safe once constructed. The tree holds indices into its own copy of the points.
+class Nearest_point
+{
+  typedef CGAL::Pointer_property_map<Dpoint>::const_type Point_map;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_map, CGAL::Search_traits_3<Dkernel>> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Search;
+
+public:
+  struct Answer
+  {
+    std::size_t index;
+    double squared_distance;
+  };
+
+  explicit Nearest_point(const std::vector<Eigen::Vector3d>& points) : Nearest_point(to_dpoints(points)) {}
+
+  explicit Nearest_point(std::vector<Dpoint> points) : points_(std::move(points))
+  {
+    std::vector<std::size_t> indices(points_.size());
+    for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
+    tree_ = std::make_unique<Search::Tree>(indices.begin(), indices.end(), Search::Tree::Splitter(), Traits(map()));
+    tree_->build();
+  }
+
+  Answer operator()(const Dpoint& q) const
+  {
+    const Search search(*tree_, q, 1, 0., true, Search::Distance(map()));
+    return {search.begin()->first, search.begin()->second};
+  }
+
+  Answer operator()(const Eigen::Vector3d& q) const { return (*this)(to_dpoint(q)); }
+
+  const Dpoint& point(std::size_t i) const { return points_[i]; }
+
+private:
+  static std::vector<Dpoint> to_dpoints(const std::vector<Eigen::Vector3d>& points)
+  {
+    std::vector<Dpoint> result;
+    result.reserve(points.size());
+    for(const Eigen::Vector3d& p : points) result.push_back(to_dpoint(p));
+    return result;
+  }
+
+  Point_map map() const { return CGAL::make_property_map(points_); }
+
+  std::vector<Dpoint> points_;
+  std::unique_ptr<Search::Tree> tree_;
+};
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_NEAREST_POINT_H

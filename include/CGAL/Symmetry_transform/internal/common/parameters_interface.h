@@ -1,0 +1,33 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+//
+// Named parameters added by the Symmetry_transform package, in the format of CGAL's list.
+// Included several times (see parameters_override/), hence no include guard.
+
+CGAL_add_named_parameter(st_grid_resolution_t, st_grid_resolution, grid_resolution)
+CGAL_add_named_parameter(st_gaussian_width_t, st_gaussian_width, gaussian_width)
+CGAL_add_named_parameter(st_grid_margin_t, st_grid_margin, grid_margin)
+CGAL_add_named_parameter(st_prst_method_t, st_prst_method, prst_method)
+CGAL_add_named_parameter(st_monte_carlo_estimator_t, st_monte_carlo_estimator, monte_carlo_estimator)
+CGAL_add_named_parameter(st_number_of_threads_t, st_number_of_threads, number_of_threads)
+CGAL_add_named_parameter(st_number_of_refinement_samples_t, st_number_of_refinement_samples, number_of_refinement_samples)
+CGAL_add_named_parameter(st_max_number_of_planes_t, st_max_number_of_planes, max_number_of_planes)
+CGAL_add_named_parameter(st_symmetry_threshold_t, st_symmetry_threshold, symmetry_threshold)
+CGAL_add_named_parameter(st_laplacian_threshold_t, st_laplacian_threshold, laplacian_threshold)
+
+// Symmetric remeshing (symmetric_remeshing.h)
+CGAL_add_named_parameter(st_position_weight_t, st_position_weight, position_weight)
+CGAL_add_named_parameter(st_strongest_plane_only_t, st_strongest_plane_only, strongest_plane_only)
+CGAL_add_named_parameter(st_output_mesh_t, st_output_mesh, output_mesh)
+// end of symmetric remeshing
+
+// Segmentation (symmetry_segmentation.h)
+CGAL_add_named_parameter(st_max_segmentation_depth_t, st_max_segmentation_depth, max_segmentation_depth)
+CGAL_add_named_parameter(st_max_number_of_segments_t, st_max_number_of_segments, max_number_of_segments)
+CGAL_add_named_parameter(st_smoothing_lambda_t, st_smoothing_lambda, smoothing_lambda)
+CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentation_tree)
+// end of segmentation
+
+// Viewpoint selection (viewpoint_selection.h)
+CGAL_add_named_parameter(st_number_of_directions_t, st_number_of_directions, number_of_directions)

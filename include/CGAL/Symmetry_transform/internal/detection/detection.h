@@ -1,0 +1,131 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_DETECTION_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_DETECTION_H
+
+// The detection pipeline of the principal symmetries (thesis, section 3.3): a triangle surface
+// or a point set, its GEDT and PRST, the candidate maxima, each refined by Iterative Symmetric
+// Points. detect_principal_symmetries(), the symmetry frame and the segmentation all run it.
+
+#include <CGAL/Symmetry_transform/Principal_symmetry.h>
+#include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
+#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/shape_input.h>
+#include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
+#include <CGAL/Symmetry_transform/internal/detection/candidates.h>
+#include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/detection/matchers.h>
+#include <CGAL/Symmetry_transform/internal/detection/refinement.h>
+#include <CGAL/Symmetry_transform/internal/detection/settings.h>
+#include <CGAL/Symmetry_transform/internal/detection/triangle_surface.h>
+#include <CGAL/Symmetry_transform/internal/grid/gaussian_distance_transform.h>
+#include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
+
+#include <vector>
+
+namespace CGAL::Symmetry_transform::internal {
+
+// The PRST of a detection. Its maxima need only be located to a bin or two, ISP doing the
+// rest: defaults::detection_monte_carlo_pairs Monte Carlo samples suffice unless the user chose
+// a number. The transform reads its own options.
+template <typename GT, typename NamedParameters>
+Reflective_symmetry_transform<GT> detection_transform(const Voxel_grid<GT>& gedt, const NamedParameters& np)
+{
+  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::number_of_samples_t>::value)
+    return reflective_symmetry_transform(gedt, np.number_of_samples(defaults::detection_monte_carlo_pairs));
+  else
+    return reflective_symmetry_transform(gedt, np);
+}
+
+// A detection and the transform it started from (the symmetry frame searches the transform too).
+template <typename GT>
+struct Detection
+{
+  std::vector<Principal_symmetry<GT>> symmetries;
+  Reflective_symmetry_transform<GT> prst;
+};
+
+// The candidates of `prst`, the transform of `surface`, refined: ISP walks with the surface's
+// closest-triangle field and ends with exact searches.
+template <typename GT>
+std::vector<Principal_symmetry<GT>> principal_symmetries_of_surface(const Triangle_surface<GT>& surface,
+                                                                   const Reflective_symmetry_transform<GT>& prst,
+                                                                   const Detection_settings& settings)
+{
+  return refine_candidates(surface.gedt, prst, surface_samples(surface.triangles, settings.sampling), surface.matcher,
+                           isp_settings(surface.grid, settings.isp_iterations, surface.gedt), settings.candidates,
+                           &surface.field);
+}
+
+// The detection on a surface built with settings.grid; the transform reads its own options from `np`.
+template <typename GT, typename NamedParameters>
+Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const Detection_settings& settings,
+                                   const NamedParameters& np)
+{
+  Reflective_symmetry_transform<GT> prst = detection_transform(surface.gedt, np);
+  std::vector<Principal_symmetry<GT>> symmetries = principal_symmetries_of_surface(surface, prst, settings);
+  return {std::move(symmetries), std::move(prst)};
+}
+
+// The detection on a surface built with the grid options of `np`.
+template <typename GT, typename NamedParameters>
+Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const NamedParameters& np)
+{
+  return detection_of_surface(surface, detection_settings(np), np);
+}
+
+template <typename TriangleMesh, typename NamedParameters>
+Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detection_of_mesh(const TriangleMesh& tm,
+                                                                                          const NamedParameters& np)
+{
+  typedef typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  std::vector<Dtriangle> triangles = triangles_of_mesh(tm, np);
+  const Detection_settings settings = detection_settings(np);
+  const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
+  return detection_of_surface(surface, settings, np);
+}
+
+// The detection on the non-degenerate triangles of a soup, which needs no repair.
+template <typename PointRange, typename TriangleRange, typename NamedParameters>
+Detection<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+detection_of_triangle_soup(const PointRange& points, const TriangleRange& triangles, const NamedParameters& np)
+{
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  const Detection_settings settings = detection_settings(np);
+  const Triangle_surface<GT> surface(triangles_of_soup(points, triangles, np), settings.grid);
+  return detection_of_surface(surface, settings, np);
+}
+
+// With a `normal_map`, ISP matches with the normals of the points and fits point to plane.
+template <typename PointRange, typename NamedParameters>
+Detection<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+detection_of_points(const PointRange& points, const NamedParameters& np)
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits GT;
+  const std::vector<Dpoint> shape = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const Detection_settings settings = detection_settings(np);
+  const Shape_frame frame = frame_of_points(shape);
+  const Grid_settings grid = grid_settings(settings.grid, frame.radius);
+  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(shape, frame, grid);
+  Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
+  auto refined = [&](const auto& matcher) {
+    return refine_candidates(gedt, prst, point_samples(shape, settings.sampling), matcher,
+                             isp_settings(grid, settings.isp_iterations, gedt), settings.candidates);
+  };
+  std::vector<Principal_symmetry<GT>> symmetries;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value)
+    symmetries = refined(Oriented_point_matcher(shape, unit_normals_of_range(points, NP_helper::get_normal_map(points, np))));
+  else
+    symmetries = refined(Point_matcher(shape));
+  return {std::move(symmetries), std::move(prst)};
+}
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_DETECTION_H

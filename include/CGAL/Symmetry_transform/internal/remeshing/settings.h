@@ -1,0 +1,94 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_SETTINGS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_SETTINGS_H
+
+// The settings of symmetric remeshing, read once from the named parameters: those of the
+// partition into proxies (Remeshing_settings) and those of the mesh extraction
+// (Meshing_settings), with the checks of the bad-input contract.
+
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+
+#include <CGAL/Variational_shape_approximation.h>
+
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL::Symmetry_transform::internal {
+
+// The planes a vertex lies on, and those a face has a mirror through, are bits of a std::uint64_t.
+constexpr std::size_t max_number_of_mirror_planes = 64;
+
+struct Remeshing_settings
+{
+  std::vector<Dplane> planes;
+  double position_weight = 0.; // alpha of the metric
+  bool strongest_plane_only = false;
+  std::size_t max_number_of_proxies = 0; // 0: not given
+  double min_error_drop = 0.;            // 0: not given
+  std::size_t number_of_iterations = defaults::remeshing_iterations;
+  std::size_t number_of_relaxations = defaults::remeshing_relaxations;
+  Surface_mesh_approximation::Seeding_method seeding = Surface_mesh_approximation::HIERARCHICAL;
+  unsigned random_seed = defaults::random_seed;
+  unsigned threads = 1;
+  bool verbose = false;
+};
+
+struct Meshing_settings
+{
+  double subdivision_ratio = defaults::subdivision_ratio;
+  bool relative_to_chord = false, with_dihedral_angle = false, optimize_anchor_location = true;
+};
+
+// Throws std::invalid_argument on a degenerate plane, more than 64 planes, `max_number_of_proxies`
+// given as 0 or `position_weight` outside [0, 1].
+template <typename PlaneRange, typename NamedParameters>
+Remeshing_settings remeshing_settings(const PlaneRange& planes, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Remeshing_settings s;
+  for(const auto& plane : planes) s.planes.push_back(to_dplane(plane));
+  if(s.planes.size() > max_number_of_mirror_planes)
+    throw std::invalid_argument("Symmetry_transform: at most 64 planes of symmetry");
+  s.max_number_of_proxies = choose_parameter(get_parameter(np, internal_np::max_number_of_proxies), std::size_t(0));
+  if(!parameters::is_default_parameter<NamedParameters, internal_np::max_number_of_proxies_t>::value &&
+     s.max_number_of_proxies == 0)
+    throw std::invalid_argument("Symmetry_transform: max_number_of_proxies must be positive");
+  s.min_error_drop = choose_parameter(get_parameter(np, internal_np::min_error_drop), 0.);
+  s.number_of_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::remeshing_iterations);
+  s.number_of_relaxations =
+    choose_parameter(get_parameter(np, internal_np::number_of_relaxations), defaults::remeshing_relaxations);
+  s.seeding = choose_parameter(get_parameter(np, internal_np::seeding_method), Surface_mesh_approximation::HIERARCHICAL);
+  s.position_weight = choose_parameter(get_parameter(np, internal_np::st_position_weight), defaults::position_weight);
+  if(!(s.position_weight >= 0. && s.position_weight <= 1.))
+    throw std::invalid_argument("Symmetry_transform: position_weight must lie in [0,1]");
+  s.strongest_plane_only = choose_parameter(get_parameter(np, internal_np::st_strongest_plane_only), false);
+  s.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), defaults::random_seed);
+  s.threads = choose_parameter(get_parameter(np, internal_np::st_number_of_threads), default_number_of_threads());
+  s.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+  return s;
+}
+
+template <typename NamedParameters>
+Meshing_settings meshing_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Meshing_settings s;
+  s.subdivision_ratio = choose_parameter(get_parameter(np, internal_np::subdivision_ratio), defaults::subdivision_ratio);
+  s.relative_to_chord = choose_parameter(get_parameter(np, internal_np::relative_to_chord), false);
+  s.with_dihedral_angle = choose_parameter(get_parameter(np, internal_np::with_dihedral_angle), false);
+  s.optimize_anchor_location = choose_parameter(get_parameter(np, internal_np::optimize_anchor_location), true);
+  return s;
+}
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_REMESHING_SETTINGS_H

@@ -1,0 +1,149 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SETTINGS_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SETTINGS_H
+
+// The settings of segment_by_symmetry(), read once from the named parameters: those of the tree
+// and those of the detection on each segment, whose defaults are fitted to segmentation and
+// whose sample counts and grid are scaled to the segment; and the tuned constants of the split
+// and of the hierarchy.
+
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+
+namespace CGAL::Symmetry_transform::internal {
+
+// The tuned constants of the segmentation (those of the clustering and of the dual graph aside).
+// The value of max_number_of_segments that sets no limit (Symmetry_segment::none).
+constexpr std::size_t no_segment_limit = (std::numeric_limits<std::size_t>::max)();
+// Segments covering less than this fraction of the mesh's area are not examined (TOO_SMALL):
+// a detection on them costs as much as on a large one, for a part too small to matter.
+constexpr double least_examined_area_fraction = 0.02;
+// Nor are segments of fewer faces than a tetrahedron: too few to be split into parts.
+constexpr std::size_t least_examined_faces = 4;
+// A segment reflected by none of its planes over more than this fraction of its area, or by all
+// of them over more than its complement, is not split (thesis, section 5.2.2).
+constexpr double least_partial_fraction = 0.1;
+// Parts of a split smaller than this fraction of the segment are merged into a neighbour.
+constexpr double least_part_fraction = 0.05;
+// The Gaussian width of the feature vectors, relative to the detection's (see face_supports()).
+constexpr double feature_width_factor = 0.5;
+// Refinement samples and Monte Carlo samples of a segment covering a fraction of the mesh's
+// area: the density of the whole mesh's, at least these many.
+constexpr std::size_t least_refinement_samples = 1000;
+constexpr std::size_t least_monte_carlo_samples = 20000;
+// The smallest grid of a segment below the root, if the root's is larger.
+constexpr long least_segment_resolution = 24;
+
+struct Segmentation_settings
+{
+  // The tree.
+  std::size_t max_depth;
+  std::size_t max_segments;
+  double lambda; // the weight of the boundary in the graph cut
+  bool verbose;
+  // The detection on a segment: that of detect_principal_symmetries(), with defaults fitted to
+  // segmentation.
+  long grid_resolution;
+  double gaussian_width;
+  std::size_t number_of_samples;
+  std::size_t number_of_refinement_samples;
+  unsigned number_of_iterations;
+  std::size_t max_number_of_planes;
+  double symmetry_threshold;
+  double laplacian_threshold;
+  Reflective_symmetry_method method;
+  Monte_carlo_estimator estimator;
+  unsigned seed;
+  unsigned threads;
+};
+
+// The settings of the detection on a segment, read from the named parameters.
+template <typename NamedParameters>
+void read_detection_settings(const NamedParameters& np, Segmentation_settings& s)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  s.grid_resolution = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), defaults::segmentation_grid_resolution));
+  s.gaussian_width = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), defaults::gaussian_width));
+  s.number_of_samples = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), defaults::segmentation_monte_carlo_pairs));
+  s.number_of_refinement_samples =
+    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), defaults::segmentation_refinement_samples));
+  s.number_of_iterations = unsigned(choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::isp_iterations));
+  s.max_number_of_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), defaults::segmentation_max_number_of_planes));
+  s.symmetry_threshold = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), defaults::symmetry_threshold));
+  s.laplacian_threshold = double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), defaults::laplacian_threshold));
+  s.method = choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
+  s.estimator =
+    choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
+  s.seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), defaults::random_seed));
+  s.threads = (std::max)(1u, unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
+                                                      default_number_of_threads())));
+}
+
+// All the settings of segment_by_symmetry(), checked.
+template <typename NamedParameters>
+Segmentation_settings segmentation_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Segmentation_settings s;
+  s.max_depth = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_segmentation_depth), defaults::max_segmentation_depth));
+  s.max_segments = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_segments), no_segment_limit));
+  s.lambda = double(choose_parameter(get_parameter(np, internal_np::st_smoothing_lambda), defaults::smoothing_lambda));
+  s.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+  read_detection_settings(np, s);
+  if(s.max_number_of_planes == 0)
+    throw std::invalid_argument("segment_by_symmetry: max_number_of_planes must be positive");
+  if(s.max_segments == 0) throw std::invalid_argument("segment_by_symmetry: max_number_of_segments must be positive");
+  if(!(s.lambda >= 0.)) throw std::invalid_argument("segment_by_symmetry: smoothing_lambda must be non-negative");
+  return s;
+}
+
+// `count` scaled by `fraction`, at least `least` (or `count` if smaller).
+inline std::size_t samples_of_fraction(std::size_t count, double fraction, std::size_t least)
+{
+  return (std::max)((std::min)(least, count), std::size_t(std::lround(fraction * double(count))));
+}
+
+// The grid resolution of a segment of radius `radius` in a mesh whose largest component has the
+// radius `root_radius`: the voxels keep their size, down to least_segment_resolution (or 12
+// Gaussian widths, the smallest grid allowed), an even number.
+inline long segment_resolution(const Segmentation_settings& s, double radius, double root_radius)
+{
+  // even, as the transform requires
+  const long least = (std::min)(s.grid_resolution, (std::max)(least_segment_resolution, 2 * (long(6. * s.gaussian_width) + 1)));
+  const long scaled = 2 * long(std::lround(0.5 * double(s.grid_resolution) * radius / root_radius));
+  return (std::max)(least, (std::min)(s.grid_resolution, scaled));
+}
+
+// The named parameters of the detection on a segment's triangles.
+inline auto detection_parameters(const Segmentation_settings& s, double fraction, long resolution, unsigned threads)
+{
+  return CGAL::parameters::grid_resolution(resolution)
+    .gaussian_width(s.gaussian_width)
+    .number_of_samples(samples_of_fraction(s.number_of_samples, fraction, least_monte_carlo_samples))
+    .number_of_refinement_samples(samples_of_fraction(s.number_of_refinement_samples, fraction, least_refinement_samples))
+    .number_of_iterations(s.number_of_iterations)
+    .max_number_of_planes(s.max_number_of_planes)
+    .symmetry_threshold(s.symmetry_threshold)
+    .laplacian_threshold(s.laplacian_threshold)
+    .prst_method(s.method)
+    .monte_carlo_estimator(s.estimator)
+    .random_seed(s.seed)
+    .number_of_threads(threads);
+}
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SEGMENTATION_SETTINGS_H
