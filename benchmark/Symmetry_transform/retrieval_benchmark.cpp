@@ -20,13 +20,15 @@
 //
 // usage: retrieval_benchmark --data DIR --cache DIR [--output DIR] [--classification FILE]
 //          [--frames symmetry,pca] [--resolution N] [--samples N] [--frame-resolution N]
-//          [--jobs J] [--limit N] [--matrices DIR]
+//          [--jobs J] [--limit N] [--matrices DIR] [--pose-search]
 //   --data: the PSB folder, holding db/<id/100>/m<id>/m<id>.off (RESULTS.md says how to get it)
 //   --classification: default DATA/classification/test.cla
 //   --jobs: models described at once, each on one thread (default: the number of cores)
 //   --limit: the first N models of the classification only (a quick check)
 //   --matrices: also write each distance matrix in the PSB binary format (n x n float) and the
 //               classification of the models evaluated, for psbTable
+//   --pose-search: compare each pair in the 16 poses that flip the axes or swap the first two,
+//               keeping the smallest distance (the alignment's sign and order ambiguities)
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -81,6 +83,7 @@ struct Options
   int frame_resolution = 64;      // symmetry_frame's default
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   std::size_t limit = 0;          // 0: all
+  bool pose_search = false;       // distances minimised over 16 axis flips and swaps
 };
 
 Options parse(int argc, char** argv)
@@ -88,6 +91,7 @@ Options parse(int argc, char** argv)
   Options o;
   for(int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
+    if(arg == "--pose-search") { o.pose_search = true; continue; }
     if(a + 1 == argc) throw std::invalid_argument(arg + " expects a value");
     const std::string value = argv[++a];
     if(arg == "--data") o.data = value;
@@ -342,6 +346,129 @@ Distance_matrices distance_matrices(const std::vector<Descriptor>& d, unsigned j
   return m;
 }
 
+// Pose search: the distances minimised over the 16 rigid motions about the centre of mass that
+// swap the first two axes and/or flip any of the three (the symmetries of a square prism around
+// the third axis). They map the GEDT samples and the PRST bins onto each other exactly (bins and
+// samples as documented in Voxel_grid and Reflective_symmetry_transform), so the search costs
+// 16 comparisons and no resampling. It resolves the alignment's ambiguities of sign and of the
+// order of the first two axes, not a swap involving the third (the pole of the PRST's bins).
+constexpr int number_of_poses = 16; // bit 0, 1, 2: flip x, y, z; bit 3: swap x and y
+
+// For each sample of the moved GEDT, the sample of the original it takes (sample (i, j, k) at
+// (k n + j) n + i, offsets (i + 1/2 - n/2, ...) from the centre): the original at g^-1 of it.
+std::vector<std::size_t> gedt_source(std::size_t n, int pose)
+{
+  std::vector<std::size_t> source(n * n * n);
+  auto flip = [&](std::size_t x, int bit) { return pose & (1 << bit) ? n - 1 - x : x; };
+  for(std::size_t k = 0; k < n; ++k)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t i = 0; i < n; ++i) {
+        const std::size_t fi = flip(i, 0), fj = flip(j, 1), fk = flip(k, 2);
+        const std::size_t si = pose & 8 ? fj : fi, sj = pose & 8 ? fi : fj;
+        source[(k * n + j) * n + i] = (fk * n + sj) * n + si;
+      }
+  return source;
+}
+
+// The same for the PRST bins (i, j, k) of (theta, phi, r), at (i n + j) n + k: the plane of
+// normal m and offset r takes the value of the plane (g^-1 m, r). On the bin centres, flipping x
+// maps phi to pi - phi, y to -phi, z to (phi + pi, -r) (the normal turned back up), and the swap
+// maps phi to pi/2 - phi: index maps, n being a multiple of 4.
+std::vector<std::size_t> prst_source(std::size_t n, int pose)
+{
+  std::vector<std::size_t> source(n * n * n);
+  auto wrap = [&](long j) { return std::size_t(((j % long(n)) + long(n)) % long(n)); };
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t k = 0; k < n; ++k) {
+        long phi = long(j);
+        std::size_t r = k;
+        if(pose & 1) phi = long(n / 2) - 1 - phi;
+        if(pose & 2) phi = long(n) - 1 - phi;
+        if(pose & 4) { phi += long(n / 2); r = n - 1 - r; }
+        if(pose & 8) phi = long(n / 4) - 1 - phi;
+        source[(i * n + j) * n + k] = (i * n + wrap(phi)) * n + r;
+      }
+  return source;
+}
+
+// The two parts of a descriptor as plain arrays, possibly moved by a pose.
+struct Descriptor_arrays
+{
+  std::vector<float> prst, gedt;
+};
+
+std::vector<Descriptor_arrays> moved(const std::vector<Descriptor>& d, int pose)
+{
+  const std::size_t n = d.front().resolution();
+  const std::vector<std::size_t> ps = prst_source(n, pose), gs = gedt_source(n, pose);
+  std::vector<Descriptor_arrays> result(d.size());
+  for(std::size_t m = 0; m < d.size(); ++m) {
+    const std::vector<float>&p = d[m].reflective_symmetry_values(), &g = d[m].gedt_values();
+    result[m].prst.resize(p.size());
+    result[m].gedt.resize(g.size());
+    for(std::size_t x = 0; x < p.size(); ++x) result[m].prst[x] = p[ps[x]];
+    for(std::size_t x = 0; x < g.size(); ++x) result[m].gedt[x] = g[gs[x]];
+  }
+  return result;
+}
+
+// The two distances of symmetry_descriptor.h, from their documented formulas: the PRST's RMS
+// difference weighted by sqrt(sin theta) per theta row, the GEDT's L2 difference.
+std::pair<double, double> distances(const Descriptor_arrays& a, const Descriptor_arrays& b, const std::vector<double>& row_weight)
+{
+  const std::size_t n = row_weight.size(), row = n * n;
+  double prst = 0., weights = 0., gedt = 0.;
+  for(std::size_t i = 0; i < n; ++i) {
+    float sum = 0.f, g = 0.f;
+    for(std::size_t x = i * row; x < (i + 1) * row; ++x) {
+      const float d = a.prst[x] - b.prst[x], e = a.gedt[x] - b.gedt[x];
+      sum += d * d;
+      g += e * e;
+    }
+    prst += row_weight[i] * double(sum);
+    weights += row_weight[i] * double(row);
+    gedt += double(g);
+  }
+  return {std::sqrt(prst / weights), std::sqrt(gedt)};
+}
+
+// The distance matrices minimised over the poses (the product minimised as a product: one pose
+// for both parts). Pose 0 is the identity: its distances are checked against the library's.
+Distance_matrices pose_searched_matrices(const std::vector<Descriptor>& d, const Distance_matrices& plain, unsigned jobs)
+{
+  const std::size_t n = d.size(), r = d.front().resolution();
+  std::vector<double> row_weight(r);
+  for(std::size_t i = 0; i < r; ++i) row_weight[i] = std::sqrt(std::sin((double(i) + 0.5) * CGAL_PI / 2. / double(r)));
+  const std::vector<Descriptor_arrays> fixed = moved(d, 0);
+  Distance_matrices m = plain;
+  double largest_difference = 0.;
+  for(int pose = 0; pose < number_of_poses; ++pose) {
+    const std::vector<Descriptor_arrays> other = pose == 0 ? fixed : moved(d, pose);
+    std::atomic<std::size_t> next{0};
+    std::mutex mutex;
+    auto work = [&] {
+      for(std::size_t i; (i = next++) < n;)
+        for(std::size_t j = i + 1; j < n; ++j) {
+          const auto [p, g] = distances(fixed[i], other[j], row_weight);
+          if(pose == 0) {
+            const double e = std::max(std::abs(p - plain.prst[i][j]), std::abs(g - plain.gedt[i][j]));
+            std::lock_guard<std::mutex> lock(mutex);
+            largest_difference = std::max(largest_difference, e);
+          }
+          m.prst[i][j] = m.prst[j][i] = std::min(m.prst[i][j], p);
+          m.gedt[i][j] = m.gedt[j][i] = std::min(m.gedt[i][j], g);
+          m.product[i][j] = m.product[j][i] = std::min(m.product[i][j], p * g);
+        }
+    };
+    std::vector<std::thread> workers;
+    for(unsigned t = 0; t < jobs; ++t) workers.emplace_back(work);
+    for(std::thread& t : workers) t.join();
+  }
+  std::cerr << "pose search: largest difference to the library's distances at the identity " << largest_difference << "\n";
+  return m;
+}
+
 // A distance matrix in the PSB binary format: n x n floats, row by row.
 void write_matrix(const fs::path& file, const std::vector<std::vector<double>>& m)
 {
@@ -407,11 +534,16 @@ void evaluate_frame(const Options& o, const std::string& frame, const RE::Classi
   for(std::size_t i = 0; i < d.size(); ++i)
     d[i] = Descriptor::load((folder / ("m" + std::to_string(c.model_ids[i]) + ".desc")).string());
   const auto start = std::chrono::steady_clock::now();
-  const Distance_matrices m = distance_matrices(d, o.jobs);
+  const Distance_matrices plain = distance_matrices(d, o.jobs);
+  const Distance_matrices searched = o.pose_search ? pose_searched_matrices(d, plain, o.jobs) : Distance_matrices();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::pair<const char*, const std::vector<std::vector<double>>*> distances[] = {
-    {"PRST", &m.prst}, {"GEDT", &m.gedt}, {"PRST x GEDT", &m.product}};
-  for(const auto& [name, matrix] : distances) {
+  std::vector<std::pair<std::string, const std::vector<std::vector<double>>*>> matrices = {
+    {"PRST", &plain.prst}, {"GEDT", &plain.gedt}, {"PRST x GEDT", &plain.product}};
+  if(o.pose_search)
+    for(const auto& [name, matrix] : {std::make_pair("PRST", &searched.prst), std::make_pair("GEDT", &searched.gedt),
+                                      std::make_pair("PRST x GEDT", &searched.product)})
+      matrices.push_back({std::string(name) + " pose search", matrix});
+  for(const auto& [name, matrix] : matrices) {
     const RE::Summary s = RE::evaluate(*matrix, c);
     std::cout << std::fixed << std::setprecision(1) << "| " << frame << " | " << name << " | " << 100. * s.mean.nearest_neighbour
               << " | " << 100. * s.mean.first_tier << " | " << 100. * s.mean.second_tier << " | " << 100. * s.mean.e_measure

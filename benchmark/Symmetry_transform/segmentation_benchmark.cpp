@@ -24,8 +24,13 @@
 // face), so that an interrupted run resumes; the evaluation is redone each run.
 //
 // usage: segmentation_benchmark --data DIR --cache DIR [--output DIR] [--count ByModel]
-//          [--models 1-20,41] [--resolution N] [--jobs J] [--no-human] [--ply DIR]
+//          [--models 1-20,41] [--resolution N] [--jobs J] [--no-human] [--no-sdf]
+//          [--partial-symmetry-fraction P] [--smallest-part-fraction Q] [--variant NAME] [--ply DIR]
 //   --data: the benchmark's folder, with off/, seg/Benchmark/ and parameters/ (RESULTS.md)
+//   --partial-symmetry-fraction, --smallest-part-fraction: segment_by_symmetry's named parameters
+//              of the same names (default: the library's, 0.1 and 0.05)
+//   --variant: a name for the library's segment_by_symmetry as built (a prototype, say): its
+//              segmentations get their own cache folder
 //   --ply: also writes every segmentation of the models run as a PLY file coloured by segment
 // Figures and the commands that produced them: RESULTS.md.
 
@@ -81,6 +86,9 @@ struct Options
 {
   fs::path data, cache, output = ".", ply;
   std::string count = "ByModel";
+  std::string variant;     // a name for a variant of segment_by_symmetry (its own cache folder)
+  double partial_fraction = -1., part_fraction = -1.; // segment_by_symmetry's, if >= 0
+  bool run_sdf = true;     // false: segment_by_symmetry only (the SDF rows are left empty)
   std::vector<int> models;
   int resolution = 32; // segment_by_symmetry's default
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
@@ -107,6 +115,7 @@ Options parse(int argc, char** argv)
   for(int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if(arg == "--no-human") { o.human = false; continue; }
+    if(arg == "--no-sdf") { o.run_sdf = false; continue; }
     if(a + 1 == argc) throw std::invalid_argument(arg + " expects a value");
     const std::string value = argv[++a];
     if(arg == "--data") o.data = value;
@@ -114,6 +123,9 @@ Options parse(int argc, char** argv)
     else if(arg == "--output") o.output = value;
     else if(arg == "--ply") o.ply = value;
     else if(arg == "--count") o.count = value;
+    else if(arg == "--variant") o.variant = value;
+    else if(arg == "--partial-symmetry-fraction") o.partial_fraction = std::stod(value);
+    else if(arg == "--smallest-part-fraction") o.part_fraction = std::stod(value);
     else if(arg == "--models") o.models = model_list(value);
     else if(arg == "--resolution") o.resolution = std::stoi(value);
     else if(arg == "--jobs") o.jobs = unsigned(std::max(1, std::stoi(value)));
@@ -175,7 +187,7 @@ Labels read_labels(const fs::path& file, std::size_t faces)
   return labels;
 }
 
-void write_labels(const fs::path& file, const Labels& labels, double seconds)
+void write_labels(const fs::path& file, const Labels& labels, double seconds, const std::string& leaves)
 {
   const fs::path temporary = file.string() + ".tmp";
   {
@@ -183,6 +195,7 @@ void write_labels(const fs::path& file, const Labels& labels, double seconds)
     for(std::size_t l : labels) out << l << '\n';
   }
   std::ofstream(file.string() + ".seconds") << seconds << '\n';
+  if(!leaves.empty()) std::ofstream(file.string() + ".leaves") << leaves << '\n';
   fs::rename(temporary, file);
 }
 
@@ -205,16 +218,38 @@ struct Segmentation
 {
   Labels labels;
   double seconds = 0.;
+  std::string leaves; // segment_by_symmetry: why each leaf of its tree was not split
 };
+
+// "NO_PARTIAL_SYMMETRY 2 TOO_SMALL 1 ...": the number of leaves of each status.
+std::string leaf_statuses(const ST::Segmentation_tree<K>& tree)
+{
+  const char* const names[] = {"SPLIT", "DEPTH_LIMIT", "COUNT_LIMIT", "NO_PARTIAL_SYMMETRY", "NOT_SEPARABLE", "TOO_SMALL"};
+  std::map<std::string, int> count;
+  for(const auto& segment : tree.segments)
+    if(segment.children.empty()) ++count[names[int(segment.status)]];
+  std::ostringstream text;
+  for(const auto& [name, n] : count) text << name << ' ' << n << ' ';
+  return text.str();
+}
 
 Segmentation segment_by_symmetry(const Options& o, Benchmark_mesh& m, std::size_t k)
 {
   auto segment = m.mesh.add_property_map<Mesh::Face_index, std::size_t>("f:symmetry", 0).first;
   const std::size_t depth = std::size_t(std::ceil(std::log2(double(std::max<std::size_t>(k, 2))))) + 1;
+  ST::Segmentation_tree<K> tree;
+  const auto np = CGAL::parameters::grid_resolution(o.resolution).number_of_threads(1u).max_number_of_segments(k)
+                    .max_segmentation_depth(depth).segmentation_tree(std::ref(tree));
   const auto start = std::chrono::steady_clock::now();
-  ST::segment_by_symmetry(m.mesh, segment, CGAL::parameters::grid_resolution(o.resolution).number_of_threads(1u)
-                                             .max_number_of_segments(k).max_segmentation_depth(depth));
-  Segmentation s{labels_of(m.mesh, segment), seconds_since(start)};
+  if(o.partial_fraction >= 0. && o.part_fraction >= 0.)
+    ST::segment_by_symmetry(m.mesh, segment, np.partial_symmetry_fraction(o.partial_fraction).smallest_part_fraction(o.part_fraction));
+  else if(o.partial_fraction >= 0.)
+    ST::segment_by_symmetry(m.mesh, segment, np.partial_symmetry_fraction(o.partial_fraction));
+  else if(o.part_fraction >= 0.)
+    ST::segment_by_symmetry(m.mesh, segment, np.smallest_part_fraction(o.part_fraction));
+  else
+    ST::segment_by_symmetry(m.mesh, segment, np);
+  Segmentation s{labels_of(m.mesh, segment), seconds_since(start), leaf_statuses(tree)};
   m.mesh.remove_property_map(segment);
   return s;
 }
@@ -242,7 +277,12 @@ std::array<Segmentation, 2> segment_by_sdf(Benchmark_mesh& m, std::size_t k)
 
 fs::path cache_folder(const Options& o, std::size_t method)
 {
-  const std::string name[] = {"", "symmetry-" + o.count + "-n" + std::to_string(o.resolution), "sdf-" + o.count, "sdf-5"};
+  std::ostringstream symmetry;
+  symmetry << "symmetry-" << o.count << "-n" << o.resolution;
+  if(o.partial_fraction >= 0.) symmetry << "-p" << o.partial_fraction;
+  if(o.part_fraction >= 0.) symmetry << "-q" << o.part_fraction;
+  if(!o.variant.empty()) symmetry << "-" << o.variant;
+  const std::string name[] = {"", symmetry.str(), "sdf-" + o.count, "sdf-5"};
   return o.cache / name[method];
 }
 
@@ -256,16 +296,18 @@ std::array<Segmentation, number_of_methods> segmentations(const Options& o, int 
     if(!fs::exists(file)) continue;
     s[method].labels = read_labels(file, m.triangles.size());
     std::ifstream(file.string() + ".seconds") >> s[method].seconds;
+    std::getline(std::ifstream(file.string() + ".leaves"), s[method].leaves);
     found[method] = true;
   }
   if(!found[1]) s[1] = segment_by_symmetry(o, m, k);
-  if(!found[2] || !found[3]) {
+  if(o.run_sdf && (!found[2] || !found[3])) {
     const std::array<Segmentation, 2> sdf = segment_by_sdf(m, k);
     s[2] = sdf[0];
     s[3] = sdf[1];
   }
   for(std::size_t method = 1; method < number_of_methods; ++method)
-    if(!found[method]) write_labels(cache_folder(o, method) / (std::to_string(id) + ".seg"), s[method].labels, s[method].seconds);
+    if(!found[method] && !s[method].labels.empty())
+      write_labels(cache_folder(o, method) / (std::to_string(id) + ".seg"), s[method].labels, s[method].seconds, s[method].leaves);
   return s;
 }
 
@@ -326,6 +368,7 @@ void write_ply(const Options& o, int id, const Benchmark_mesh& m, const std::arr
   const char* const names[] = {"", "symmetry", "sdf-k", "sdf-5"};
   fs::create_directories(o.ply);
   for(std::size_t method = 1; method < number_of_methods; ++method) {
+    if(s[method].labels.empty()) continue;
     Labels labels = s[method].labels;
     SE::renumber(labels); // colours in order of first appearance
     write_ply(o.ply / (std::to_string(id) + "-" + names[method] + ".ply"), m, labels);
@@ -338,7 +381,8 @@ struct Model_result
   int id = 0;
   std::size_t k = 0, humans = 0;
   std::array<Mean_scores, number_of_methods> scores;
-  std::string error; // not evaluated, and why
+  std::string leaves; // of segment_by_symmetry's tree
+  std::string error;  // not evaluated, and why
 };
 
 Model_result evaluate_model(const Options& o, int id, std::size_t k)
@@ -355,7 +399,9 @@ Model_result evaluate_model(const Options& o, int id, std::size_t k)
   if(humans.empty()) throw std::runtime_error("no human segmentation in " + folder.string());
   r.humans = humans.size();
   const std::array<Segmentation, number_of_methods> s = segmentations(o, id, m, k);
+  r.leaves = s[1].leaves;
   for(std::size_t method = 1; method < number_of_methods; ++method) {
+    if(s[method].labels.empty()) continue; // not run
     Mean_scores sum;
     for(const Labels& h : humans) sum.add(SE::compare(data, s[method].labels, h));
     r.scores[method] = sum.mean();
@@ -407,13 +453,14 @@ std::vector<Model_result> run(const Options& o)
 void write_model_csv(const Options& o, const std::vector<Model_result>& results)
 {
   std::ofstream csv(o.output / "segmentation_per_model.csv");
-  csv << "model,category,method,k,humans,segments,seconds,cd,cd_comparisons,hd,rm,rf,ri_error,gce,lce,gce_faces,lce_faces,error\n";
+  csv << "model,category,method,k,humans,segments,seconds,cd,cd_comparisons,hd,rm,rf,ri_error,gce,lce,gce_faces,lce_faces,leaves,error\n";
   for(const Model_result& r : results)
     for(std::size_t method = 0; method < number_of_methods; ++method) {
       const Mean_scores& m = r.scores[method];
       csv << r.id << ',' << categories[category_of(r.id)] << ',' << methods[method] << ',' << r.k << ',' << r.humans << ','
           << m.segments << ',' << m.seconds << ',' << (m.cd_count > 0 ? std::to_string(m.cd) : "") << ',' << m.cd_count << ',' << m.hd << ',' << m.rm << ',' << m.rf
-          << ',' << m.ri << ',' << m.gce << ',' << m.lce << ',' << m.gce_faces << ',' << m.lce_faces << ",\"" << r.error << "\"\n";
+          << ',' << m.ri << ',' << m.gce << ',' << m.lce << ',' << m.gce_faces << ',' << m.lce_faces << ",\""
+          << (method == 1 ? r.leaves : "") << "\",\"" << r.error << "\"\n";
     }
 }
 
@@ -425,6 +472,7 @@ std::vector<std::array<Mean_scores, number_of_methods>> aggregate(const std::vec
   for(const Model_result& r : results) {
     if(!r.error.empty()) continue;
     for(std::size_t method = 0; method < number_of_methods; ++method) {
+      if(r.scores[method].count == 0) continue; // not run
       sums[std::size_t(category_of(r.id))][method].add(r.scores[method]);
       sums[all][method].add(r.scores[method]);
     }
@@ -440,7 +488,7 @@ void print_tables(const Options& o, const std::vector<std::array<Mean_scores, nu
   csv << "category,method,models,segments,seconds,cd,hd,rm,rf,ri_error,gce,lce,gce_faces,lce_faces\n";
   std::cout << std::fixed << std::setprecision(3);
   for(std::size_t method = 0; method < number_of_methods; ++method) {
-    if(method == 0 && !o.human) continue;
+    if(a.back()[method].count == 0) continue; // not run
     std::cout << "\n" << methods[method] << " (means over the meshes of the means over their human segmentations)\n\n"
               << "| category | meshes | segments | seconds | CD | HD | Rm | Rf | 1 - RI | GCE | LCE |\n"
               << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -460,16 +508,23 @@ void print_tables(const Options& o, const std::vector<std::array<Mean_scores, nu
   }
 }
 
-// 1 - RI side by side, and where ours is at most SDF's.
+// 1 - RI side by side, and where ours is at most SDF's ("-": not run).
 void print_comparison(const std::vector<std::array<Mean_scores, number_of_methods>>& a)
 {
   std::cout << "\n1 - Rand Index by category\n\n| category | Human | Symmetry | SDF k | SDF 5 | Symmetry <= SDF k | Symmetry <= SDF 5 |\n"
             << "|---|---:|---:|---:|---:|:---:|:---:|\n";
   for(std::size_t c = 0; c < a.size(); ++c) {
     if(a[c][1].count == 0) continue;
-    const std::string name = c + 1 == a.size() ? "**all**" : categories[c];
-    std::cout << "| " << name << " | " << a[c][0].ri << " | " << a[c][1].ri << " | " << a[c][2].ri << " | " << a[c][3].ri << " | "
-              << (a[c][1].ri <= a[c][2].ri ? "yes" : "no") << " | " << (a[c][1].ri <= a[c][3].ri ? "yes" : "no") << " |\n";
+    auto value = [&](std::size_t method) {
+      std::ostringstream text;
+      if(a[c][method].count > 0) text << std::fixed << std::setprecision(3) << a[c][method].ri; else text << "-";
+      return text.str();
+    };
+    auto at_most = [&](std::size_t method) {
+      return a[c][method].count == 0 ? "-" : a[c][1].ri <= a[c][method].ri ? "yes" : "no";
+    };
+    std::cout << "| " << (c + 1 == a.size() ? "**all**" : categories[c]) << " | " << value(0) << " | " << value(1) << " | "
+              << value(2) << " | " << value(3) << " | " << at_most(2) << " | " << at_most(3) << " |\n";
   }
 }
 
@@ -480,7 +535,10 @@ try {
   const Options o = parse(argc, argv);
   fs::create_directories(o.output);
   std::cout << "Princeton Segmentation Benchmark (" << o.data.string() << "): " << o.models.size() << " meshes; number of segments "
-            << o.count << "; segment_by_symmetry at " << o.resolution << "^3; " << o.jobs << " meshes at a time\n";
+            << o.count << "; segment_by_symmetry at " << o.resolution << "^3";
+  if(o.partial_fraction >= 0.) std::cout << ", partial_symmetry_fraction " << o.partial_fraction;
+  if(o.part_fraction >= 0.) std::cout << ", smallest_part_fraction " << o.part_fraction;
+  std::cout << " (cache " << cache_folder(o, 1).filename().string() << "); " << o.jobs << " meshes at a time\n";
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Model_result> results = run(o);
   std::size_t failed = 0;

@@ -487,6 +487,31 @@ TEST(SymmetrySegmentation, StopsWhereNoPlaneReflectsPartOfTheSegment)
   for(double x : r.tree.segments[0].reflected_fractions) EXPECT_GT(x, 0.9);
 }
 
+// partial_symmetry_fraction 0.5 keeps only a plane reflecting exactly half of the segment: the
+// table (split at depth 1 with the default 0.1, test above) is then left whole, by the stopping rule.
+TEST(SymmetrySegmentation, PartialSymmetryFractionSetsTheStoppingRule)
+{
+  const Composite s = table();
+  const Result r = segmentation(s.mesh, grid_32.max_segmentation_depth(1).partial_symmetry_fraction(0.5));
+  expect_valid(s.mesh, r);
+  EXPECT_EQ(r.count, 1u) << describe(r);
+  EXPECT_EQ(r.tree.segments[0].status, ST::Segment_status::NO_PARTIAL_SYMMETRY);
+  ASSERT_FALSE(r.tree.segments[0].reflected_fractions.empty());
+  for(double x : r.tree.segments[0].reflected_fractions) EXPECT_NE(x, 0.5);
+}
+
+// smallest_part_fraction above one half merges every part into the largest (parts are merged
+// smallest first, and at most one part can hold more than half of the area): the table's split
+// leaves a single part.
+TEST(SymmetrySegmentation, SmallestPartFractionMergesTheParts)
+{
+  const Composite s = table();
+  const Result r = segmentation(s.mesh, grid_32.max_segmentation_depth(1).smallest_part_fraction(0.6));
+  expect_valid(s.mesh, r);
+  EXPECT_EQ(r.count, 1u) << describe(r);
+  EXPECT_EQ(r.tree.segments[0].status, ST::Segment_status::NOT_SEPARABLE);
+}
+
 TEST(SymmetrySegmentation, SameSeedGivesTheSameSegmentation)
 {
   const Composite s = box_beside_ellipsoid();
@@ -581,6 +606,20 @@ TEST(SymmetrySegmentationBadInput, BadParametersAreRejected)
   EXPECT_TRUE(throws_with_message<std::invalid_argument>(
     [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.grid_resolution(4)); },
     "grid_resolution"));
+}
+
+TEST(SymmetrySegmentationBadInput, FractionsOutOfRangeAreRejected)
+{
+  const Surface_mesh mesh = box<Surface_mesh>().mesh;
+  std::vector<std::size_t> ids(num_faces(mesh));
+  for(double p : {-0.1, 0.6})
+    EXPECT_TRUE(throws_with_message<std::invalid_argument>(
+      [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.partial_symmetry_fraction(p)); },
+      "partial_symmetry_fraction"));
+  for(double q : {-0.1, 1.})
+    EXPECT_TRUE(throws_with_message<std::invalid_argument>(
+      [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.smallest_part_fraction(q)); },
+      "smallest_part_fraction"));
 }
 
 } // namespace
