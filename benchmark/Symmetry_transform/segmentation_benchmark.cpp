@@ -268,7 +268,7 @@ std::array<Segmentation, 2> segment_by_sdf(Benchmark_mesh& m, std::size_t k)
   for(int c = 0; c < 2; ++c) {
     start = std::chrono::steady_clock::now();
     CGAL::segmentation_from_sdf_values(m.mesh, sdf, segment, clusters[c]);
-    result[std::size_t(c)] = {labels_of(m.mesh, segment), values + seconds_since(start)};
+    result[std::size_t(c)] = {labels_of(m.mesh, segment), values + seconds_since(start), std::string()};
   }
   m.mesh.remove_property_map(sdf);
   m.mesh.remove_property_map(segment);
