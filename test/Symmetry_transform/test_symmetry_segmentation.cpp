@@ -487,29 +487,34 @@ TEST(SymmetrySegmentation, StopsWhereNoPlaneReflectsPartOfTheSegment)
   for(double x : r.tree.segments[0].reflected_fractions) EXPECT_GT(x, 0.9);
 }
 
-// partial_symmetry_fraction 0.5 keeps only a plane reflecting exactly half of the segment: the
-// table (split at depth 1 with the default 0.1, test above) is then left whole, by the stopping rule.
-TEST(SymmetrySegmentation, PartialSymmetryFractionSetsTheStoppingRule)
+// The table at depth 1 (split into its slab and legs with the defaults, test above), segmented
+// with `np` (depth 1): one segment, its root a leaf for the reason `status`.
+template <typename NamedParameters>
+Result table_left_whole(const NamedParameters& np, ST::Segment_status status)
 {
   const Composite s = table();
-  const Result r = segmentation(s.mesh, grid_32.max_segmentation_depth(1).partial_symmetry_fraction(0.5));
+  const Result r = segmentation(s.mesh, np);
   expect_valid(s.mesh, r);
   EXPECT_EQ(r.count, 1u) << describe(r);
-  EXPECT_EQ(r.tree.segments[0].status, ST::Segment_status::NO_PARTIAL_SYMMETRY);
+  EXPECT_EQ(r.tree.segments[0].status, status);
+  return r;
+}
+
+// partial_symmetry_fraction 0.5 keeps only a plane reflecting exactly half of the segment: the
+// stopping rule leaves the table whole.
+TEST(SymmetrySegmentation, PartialSymmetryFractionSetsTheStoppingRule)
+{
+  const Result r = table_left_whole(grid_32.max_segmentation_depth(1).partial_symmetry_fraction(0.5),
+                                    ST::Segment_status::NO_PARTIAL_SYMMETRY);
   ASSERT_FALSE(r.tree.segments[0].reflected_fractions.empty());
   for(double x : r.tree.segments[0].reflected_fractions) EXPECT_NE(x, 0.5);
 }
 
 // smallest_part_fraction above one half merges every part into the largest (parts are merged
-// smallest first, and at most one part can hold more than half of the area): the table's split
-// leaves a single part.
+// smallest first, and at most one part can hold more than half of the area).
 TEST(SymmetrySegmentation, SmallestPartFractionMergesTheParts)
 {
-  const Composite s = table();
-  const Result r = segmentation(s.mesh, grid_32.max_segmentation_depth(1).smallest_part_fraction(0.6));
-  expect_valid(s.mesh, r);
-  EXPECT_EQ(r.count, 1u) << describe(r);
-  EXPECT_EQ(r.tree.segments[0].status, ST::Segment_status::NOT_SEPARABLE);
+  table_left_whole(grid_32.max_segmentation_depth(1).smallest_part_fraction(0.6), ST::Segment_status::NOT_SEPARABLE);
 }
 
 TEST(SymmetrySegmentation, SameSeedGivesTheSameSegmentation)
