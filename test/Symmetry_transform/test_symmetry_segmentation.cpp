@@ -487,6 +487,36 @@ TEST(SymmetrySegmentation, StopsWhereNoPlaneReflectsPartOfTheSegment)
   for(double x : r.tree.segments[0].reflected_fractions) EXPECT_GT(x, 0.9);
 }
 
+// The table at depth 1 (split into its slab and legs with the defaults, test above), segmented
+// with `np` (depth 1): one segment, its root a leaf for the reason `status`.
+template <typename NamedParameters>
+Result table_left_whole(const NamedParameters& np, ST::Segment_status status)
+{
+  const Composite s = table();
+  const Result r = segmentation(s.mesh, np);
+  expect_valid(s.mesh, r);
+  EXPECT_EQ(r.count, 1u) << describe(r);
+  EXPECT_EQ(r.tree.segments[0].status, status);
+  return r;
+}
+
+// partial_symmetry_fraction 0.5 keeps only a plane reflecting exactly half of the segment: the
+// stopping rule leaves the table whole.
+TEST(SymmetrySegmentation, PartialSymmetryFractionSetsTheStoppingRule)
+{
+  const Result r = table_left_whole(grid_32.max_segmentation_depth(1).partial_symmetry_fraction(0.5),
+                                    ST::Segment_status::NO_PARTIAL_SYMMETRY);
+  ASSERT_FALSE(r.tree.segments[0].reflected_fractions.empty());
+  for(double x : r.tree.segments[0].reflected_fractions) EXPECT_NE(x, 0.5);
+}
+
+// smallest_part_fraction above one half merges every part into the largest (parts are merged
+// smallest first, and at most one part can hold more than half of the area).
+TEST(SymmetrySegmentation, SmallestPartFractionMergesTheParts)
+{
+  table_left_whole(grid_32.max_segmentation_depth(1).smallest_part_fraction(0.6), ST::Segment_status::NOT_SEPARABLE);
+}
+
 TEST(SymmetrySegmentation, SameSeedGivesTheSameSegmentation)
 {
   const Composite s = box_beside_ellipsoid();
@@ -581,6 +611,20 @@ TEST(SymmetrySegmentationBadInput, BadParametersAreRejected)
   EXPECT_TRUE(throws_with_message<std::invalid_argument>(
     [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.grid_resolution(4)); },
     "grid_resolution"));
+}
+
+TEST(SymmetrySegmentationBadInput, FractionsOutOfRangeAreRejected)
+{
+  const Surface_mesh mesh = box<Surface_mesh>().mesh;
+  std::vector<std::size_t> ids(num_faces(mesh));
+  for(double p : {-0.1, 0.6})
+    EXPECT_TRUE(throws_with_message<std::invalid_argument>(
+      [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.partial_symmetry_fraction(p)); },
+      "partial_symmetry_fraction"));
+  for(double q : {-0.1, 1.})
+    EXPECT_TRUE(throws_with_message<std::invalid_argument>(
+      [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.smallest_part_fraction(q)); },
+      "smallest_part_fraction"));
 }
 
 } // namespace

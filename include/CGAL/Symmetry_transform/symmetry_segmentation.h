@@ -31,11 +31,12 @@ enum class Segment_status {
   DEPTH_LIMIT,
   /// Splitting it would have exceeded `max_number_of_segments`.
   COUNT_LIMIT,
-  /// No principal plane of the segment reflects between 10 % and 90 % of its area onto it: the
-  /// thesis's stopping rule, the segment is symmetric as a whole or not at all.
+  /// No principal plane of the segment reflects between 10 % and 90 % of its area onto it (the
+  /// bounds set by `partial_symmetry_fraction`): the thesis's stopping rule, the segment is
+  /// symmetric as a whole or not at all.
   NO_PARTIAL_SYMMETRY,
   /// Its faces fell into a single part after the clustering, the graph cut and the merging of
-  /// the parts smaller than 5 % of the segment.
+  /// the parts smaller than 5 % of the segment (`smallest_part_fraction`).
   NOT_SEPARABLE,
   /// Less than 2 % of the mesh's area, or fewer than 4 faces: not examined.
   TOO_SMALL
@@ -153,6 +154,21 @@ struct Segmentation_tree
  *     \cgalParamType{`double`}
  *     \cgalParamDefault{1}
  *   \cgalParamNEnd
+ *   \cgalParamNBegin{partial_symmetry_fraction}
+ *     \cgalParamDescription{\f$ p \f$: a segment is split only if one of its principal planes
+ *                            reflects between \f$ p \f$ and \f$ 1 - p \f$ of its area onto it (the
+ *                            thesis's rule, 10 % and 90 %). Smaller values also split shapes whose
+ *                            asymmetric parts are small (a cup's handle: 5 to 10 % of its area)}
+ *     \cgalParamType{`double`, in \f$ [0, 0.5] \f$}
+ *     \cgalParamDefault{0.1}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{smallest_part_fraction}
+ *     \cgalParamDescription{the parts of a split smaller than this fraction of the segment's area
+ *                            are merged into the neighbouring part with which they share the
+ *                            longest boundary. Smaller values keep small parts (a table's legs)}
+ *     \cgalParamType{`double`, in \f$ [0, 1) \f$}
+ *     \cgalParamDefault{0.05}
+ *   \cgalParamNEnd
  *   \cgalParamNBegin{segmentation_tree}
  *     \cgalParamDescription{receives the segmentation tree (pass `std::ref(tree)`)}
  *     \cgalParamType{`std::reference_wrapper<Segmentation_tree<GeomTraits>>`}
@@ -200,7 +216,8 @@ struct Segmentation_tree
  * \returns the number of segments. Every face gets a segment id, and every segment is connected
  * (through edges of the mesh). Deterministic for a given `random_seed` and number of threads.
  * \throws std::invalid_argument if the mesh is empty, has a face that is not a triangle, a NaN or
- * infinite coordinate, or only degenerate (zero-area) faces, or on the other bad inputs of
+ * infinite coordinate, or only degenerate (zero-area) faces, if `partial_symmetry_fraction` or
+ * `smallest_part_fraction` lies out of its range, or on the other bad inputs of
  * `detect_principal_symmetries()` (e.g. a grid resolution too small).
 */
 template <typename TriangleMesh, typename SegmentIdMap, typename NamedParameters = parameters::Default_named_parameters>

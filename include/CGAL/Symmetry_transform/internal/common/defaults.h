@@ -64,6 +64,12 @@ constexpr long segmentation_grid_resolution = 32;
 constexpr std::size_t segmentation_monte_carlo_pairs = 100000;
 constexpr std::size_t segmentation_refinement_samples = 5000;
 constexpr std::size_t segmentation_max_number_of_planes = 6;
+// A segment is split only if one of its planes reflects between this fraction of its area and
+// its complement onto it (the thesis's stopping rule, section 5.2.2: 10 % and 90 %).
+constexpr double partial_symmetry_fraction = 0.1;
+// Parts of a split smaller than this fraction of the segment are merged into a neighbour: thin
+// strips along a boundary, left by the graph cut, are no parts.
+constexpr double smallest_part_fraction = 0.05;
 
 } // namespace defaults
 } // namespace CGAL::Symmetry_transform::internal

@@ -27,6 +27,8 @@ CGAL_add_named_parameter(st_max_segmentation_depth_t, st_max_segmentation_depth,
 CGAL_add_named_parameter(st_max_number_of_segments_t, st_max_number_of_segments, max_number_of_segments)
 CGAL_add_named_parameter(st_smoothing_lambda_t, st_smoothing_lambda, smoothing_lambda)
 CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentation_tree)
+CGAL_add_named_parameter(st_partial_symmetry_fraction_t, st_partial_symmetry_fraction, partial_symmetry_fraction)
+CGAL_add_named_parameter(st_smallest_part_fraction_t, st_smallest_part_fraction, smallest_part_fraction)
 // end of segmentation
 
 // Viewpoint selection (viewpoint_selection.h)

@@ -31,11 +31,6 @@ constexpr std::size_t no_segment_limit = (std::numeric_limits<std::size_t>::max)
 constexpr double least_examined_area_fraction = 0.02;
 // Nor are segments of fewer faces than a tetrahedron: too few to be split into parts.
 constexpr std::size_t least_examined_faces = 4;
-// A segment reflected by none of its planes over more than this fraction of its area, or by all
-// of them over more than its complement, is not split (thesis, section 5.2.2).
-constexpr double least_partial_fraction = 0.1;
-// Parts of a split smaller than this fraction of the segment are merged into a neighbour.
-constexpr double least_part_fraction = 0.05;
 // The Gaussian width of the feature vectors, relative to the detection's (see face_supports()).
 constexpr double feature_width_factor = 0.5;
 // Refinement samples and Monte Carlo samples of a segment covering a fraction of the mesh's
@@ -51,6 +46,8 @@ struct Segmentation_settings
   std::size_t max_depth;
   std::size_t max_segments;
   double lambda; // the weight of the boundary in the graph cut
+  double partial_symmetry_fraction; // split only if a plane reflects between it and 1 - it
+  double smallest_part_fraction;    // of the segment: smaller parts of a split are merged
   bool verbose;
   // The detection on a segment: that of detect_principal_symmetries(), with defaults fitted to
   // segmentation.
@@ -102,11 +99,19 @@ Segmentation_settings segmentation_settings(const NamedParameters& np)
   s.max_segments = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_segments), no_segment_limit));
   s.lambda = double(choose_parameter(get_parameter(np, internal_np::st_smoothing_lambda), defaults::smoothing_lambda));
   s.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
+  s.partial_symmetry_fraction =
+    double(choose_parameter(get_parameter(np, internal_np::st_partial_symmetry_fraction), defaults::partial_symmetry_fraction));
+  s.smallest_part_fraction =
+    double(choose_parameter(get_parameter(np, internal_np::st_smallest_part_fraction), defaults::smallest_part_fraction));
   read_detection_settings(np, s);
   if(s.max_number_of_planes == 0)
     throw std::invalid_argument("segment_by_symmetry: max_number_of_planes must be positive");
   if(s.max_segments == 0) throw std::invalid_argument("segment_by_symmetry: max_number_of_segments must be positive");
   if(!(s.lambda >= 0.)) throw std::invalid_argument("segment_by_symmetry: smoothing_lambda must be non-negative");
+  if(!(s.partial_symmetry_fraction >= 0. && s.partial_symmetry_fraction <= 0.5))
+    throw std::invalid_argument("segment_by_symmetry: partial_symmetry_fraction must lie in [0, 0.5]");
+  if(!(s.smallest_part_fraction >= 0. && s.smallest_part_fraction < 1.))
+    throw std::invalid_argument("segment_by_symmetry: smallest_part_fraction must lie in [0, 1)");
   return s;
 }
 

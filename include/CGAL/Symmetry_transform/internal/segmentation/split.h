@@ -93,21 +93,22 @@ inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::v
 }
 
 // The fraction of the segment's area that each plane reflects onto it (the area-weighted mean of
-// its column of supports; `area`: the sum of `areas`); sets split.partial_symmetry by the stopping rule.
+// its column of supports; `area`: the sum of `areas`); sets split.partial_symmetry by the stopping
+// rule, a plane reflecting between `partial_fraction` and its complement.
 inline void record_reflected_fractions(const Eigen::MatrixXd& features, const std::vector<double>& areas, double area,
-                                       Split& split)
+                                       double partial_fraction, Split& split)
 {
   for(Eigen::Index j = 0; j < features.cols(); ++j) {
     double supported = 0.;
     for(std::size_t i = 0; i < areas.size(); ++i) supported += areas[i] * features(Eigen::Index(i), j);
     const double fraction = supported / area;
     split.reflected_fractions.push_back(fraction);
-    if(fraction >= least_partial_fraction && fraction <= 1. - least_partial_fraction) split.partial_symmetry = true;
+    if(fraction >= partial_fraction && fraction <= 1. - partial_fraction) split.partial_symmetry = true;
   }
 }
 
 // The connected parts of the two labels of the clustering and graph cut of the features, the
-// parts smaller than least_part_fraction of the segment merged into their neighbours.
+// parts smaller than settings.smallest_part_fraction of the segment merged into their neighbours.
 inline std::vector<std::vector<std::size_t>> parts_of_clustering(const Segmentation_mesh& mesh,
                                                                  const std::vector<std::size_t>& faces,
                                                                  const Eigen::MatrixXd& features,
@@ -119,7 +120,7 @@ inline std::vector<std::vector<std::size_t>> parts_of_clustering(const Segmentat
   std::vector<std::size_t> local(mesh.number_of_faces(), none);
   for(std::size_t i = 0; i < faces.size(); ++i) local[faces[i]] = i;
   const std::vector<std::size_t> labels = graph_cut_labels(mesh, faces, local, clusters.membership, settings.lambda);
-  return merge_small_parts(mesh, connected_parts(mesh, faces, local, labels), least_part_fraction * area);
+  return merge_small_parts(mesh, connected_parts(mesh, faces, local, labels), settings.smallest_part_fraction * area);
 }
 
 // The split of the segment made of `faces` (connected, sorted), covering `fraction` of the mesh.
@@ -144,7 +145,7 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
     areas[i] = mesh.areas[faces[i]];
     area += areas[i];
   }
-  record_reflected_fractions(features, areas, area, split);
+  record_reflected_fractions(features, areas, area, settings.partial_symmetry_fraction, split);
   split.feature_seconds = since_start() - split.detection_seconds;
   if(split.partial_symmetry) {
     split.parts = parts_of_clustering(mesh, faces, features, areas, area, settings);
