@@ -563,17 +563,7 @@ void make_polyhedron_of(const Surface_mesh& mesh, Polyhedron& result)
     const auto h = halfedge(f, mesh);
     triangles.push_back({std::size_t(source(h, mesh)), std::size_t(target(h, mesh)), std::size_t(target(next(h, mesh), mesh))});
   }
-  result.clear();
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, result);
-  std::size_t i = 0;
-  for(auto f : faces(result)) {
-    const Point_3& first = points[triangles[i++][0]];
-    for(auto h : CGAL::halfedges_around_face(halfedge(f, result), result))
-      if(get(CGAL::vertex_point, result, source(h, result)) == first) {
-        set_halfedge(f, h, result);
-        break;
-      }
-  }
+  mesh_from_triangle_soup(points, triangles, result);
 }
 
 // The same shape as a Surface_mesh and as a Polyhedron_3 (the test checks that the two list the

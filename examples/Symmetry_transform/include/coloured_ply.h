@@ -59,6 +59,33 @@ void add_plane_square(CGAL::Surface_mesh<Point>& mesh, const Plane& plane, const
   for(typename Mesh::Face_index f : {mesh.add_face(a, b, c), mesh.add_face(a, c, d)}) face_colour[f] = colour;
 }
 
+// Appends to a mesh with face colours the cylinder of radius `radius` along `axis`, from
+// `half_length` before axis.point() to `half_length` after it, as 24 triangles of colour `colour`.
+template <typename Point, typename Line>
+void add_axis_cylinder(CGAL::Surface_mesh<Point>& mesh, const Line& axis, double half_length, double radius,
+                       const CGAL::IO::Color& colour)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  const auto d = axis.to_vector() / std::sqrt(axis.to_vector().squared_length());
+  auto u = axis.perpendicular_plane(CGAL::ORIGIN).base1();
+  u = u / std::sqrt(u.squared_length());
+  const auto v = CGAL::cross_product(d, u);
+  constexpr int sides = 12;
+  typename Mesh::Vertex_index ring[2][sides];
+  for(int end = 0; end < 2; ++end)
+    for(int i = 0; i < sides; ++i) {
+      const double a = 2. * CGAL_PI * i / sides;
+      ring[end][i] =
+        mesh.add_vertex(axis.point() + (end ? half_length : -half_length) * d + radius * (std::cos(a) * u + std::sin(a) * v));
+    }
+  auto face_colour = mesh.template property_map<typename Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  for(int i = 0; i < sides; ++i) {
+    const int j = (i + 1) % sides;
+    face_colour[mesh.add_face(ring[0][i], ring[0][j], ring[1][j])] = colour;
+    face_colour[mesh.add_face(ring[0][i], ring[1][j], ring[1][i])] = colour;
+  }
+}
+
 } // namespace examples
 
 #endif // CGAL_SYMMETRY_TRANSFORM_EXAMPLES_COLOURED_PLY_H

@@ -13,6 +13,7 @@
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/sampled_distances.h>
+#include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/number_utils.h>
@@ -293,6 +294,31 @@ double symmetry_distance_error_of_points(
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   return internal::symmetry_distance_error_of_point_set(internal::points_of_range(points, NP_helper::get_const_point_map(points, np)),
                                                         internal::to_dplane(plane), np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformMeasureRef
+ *
+ * Symmetry measure of a sampled function \f$ f \f$ with respect to a rotation (or any rigid
+ * motion) \f$ \gamma \f$, evaluated directly on the grid as in
+ * `symmetry_measure(const Voxel_grid<GeomTraits>&, const typename GeomTraits::Plane_3&)`:
+ * \f$ SM(\gamma) = \sum_x f(x)\, f(\gamma(x)) / \sum_x f(x)^2 \f$, 1 when \f$ \gamma \f$
+ * maps \f$ f \f$ onto itself. `rotation_about_axis()` builds the rotation about an axis.
+ *
+ * \tparam GeomTraits a model of `Kernel`
+ *
+ * \param f the function
+ * \param rotation the rotation \f$ \gamma \f$: its linear part must be orthogonal (to \f$ 10^{-6} \f$)
+ *
+ * \returns \f$ SM(\gamma) \f$
+ *
+ * \throws std::invalid_argument if `rotation` is not a rigid motion or `f` is zero everywhere.
+*/
+template <typename GeomTraits>
+double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Aff_transformation_3& rotation)
+{
+  const internal::Rigid_motion motion = internal::rigid_motion(rotation);
+  return internal::symmetry_measure_of_reflection(f, [&](double* x) { motion.move(x); });
 }
 
 } // namespace CGAL::Symmetry_transform

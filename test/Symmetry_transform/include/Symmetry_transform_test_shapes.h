@@ -177,6 +177,27 @@ Shape<Mesh> centrally_symmetric_hull(unsigned seed = 2)
   return s;
 }
 
+// `mesh` becomes the mesh of a triangle soup, each face starting at the first corner of its
+// triangle (a Polyhedron_3 may start its faces at other halfedges, and so may copy_face_graph):
+// the surface samples, drawn triangle by triangle from the first corner, are then the same for
+// every mesh type.
+template <typename Mesh>
+void mesh_from_triangle_soup(const std::vector<Point_3>& points, const std::vector<std::array<std::size_t, 3>>& triangles,
+                             Mesh& mesh)
+{
+  CGAL::clear(mesh);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  std::size_t i = 0;
+  for(auto f : faces(mesh)) {
+    const Point_3& first = points[triangles[i++][0]];
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      if(get(CGAL::vertex_point, mesh, source(h, mesh)) == first) {
+        set_halfedge(f, h, mesh);
+        break;
+      }
+  }
+}
+
 // `mesh` rebuilt with its vertices and faces in lexicographic order, each face starting at its
 // smallest vertex. convex_hull_3 (CGAL 5.5) orders its output through a std::map keyed by vertex
 // handles, i.e. by heap addresses: the same points can give the faces in another order from one

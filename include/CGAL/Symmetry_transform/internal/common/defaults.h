@@ -40,6 +40,11 @@ constexpr long descriptor_grid_resolution = 32;
 // Viewpoint selection: directions of the Fibonacci sphere searched exhaustively.
 constexpr std::size_t viewpoint_directions = 4000;
 
+// Rotational symmetries: orders 2 to 12 cover the rotational parts of most manufactured objects
+// (gears and turbines with more teeth or blades are reported at the largest divisor of their
+// order within the range).
+constexpr int max_order = 12;
+
 // Symmetric remeshing (VSA's own defaults where the names are VSA's).
 constexpr std::size_t remeshing_iterations = 20;
 constexpr std::size_t remeshing_relaxations = 5;

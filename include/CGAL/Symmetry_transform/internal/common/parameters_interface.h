@@ -31,3 +31,6 @@ CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentat
 
 // Viewpoint selection (viewpoint_selection.h)
 CGAL_add_named_parameter(st_number_of_directions_t, st_number_of_directions, number_of_directions)
+
+// Rotational symmetries (rotational_symmetries.h)
+CGAL_add_named_parameter(st_max_order_t, st_max_order, max_order)

@@ -1,0 +1,106 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_GROUP_CLOSURE_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_GROUP_CLOSURE_H
+
+// The rotations of a shape form a group: the image of a rotation axis by another rotation of the
+// shape is an axis of the same order, and the product of two rotations is a rotation. From the
+// axes found, these give the others of the group: the 2k two-fold axes of a gear with k teeth
+// (dihedral group: k axes across the k-fold one, in two classes) from the k-fold axis and one of
+// them, the 3-fold axes of a cube from its 4-fold ones. They are candidates, refined and tested
+// as the others (a product of approximate symmetries need not be one).
+
+#include <CGAL/Symmetry_transform/internal/rotation/axis.h>
+#include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
+#include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <optional>
+#include <vector>
+
+namespace CGAL::Symmetry_transform::internal {
+
+// A product's angle is taken as 2 pi m / n if within 0.01 radian of it (0.6 degree: found axes of
+// approximate symmetries are within a fraction of a degree of their true place); a product that
+// also translates along its axis by more than 1 % of the radius (axes that do not meet) is a
+// screw motion, no rotation.
+constexpr double closure_angle_tolerance = 0.01;
+constexpr double closure_screw_tolerance = 0.01;
+
+inline Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a after b
+{
+  Rigid_motion r;
+  r.linear = a.linear * b.linear;
+  r.translation = a.linear * b.translation + a.translation;
+  return r;
+}
+
+// The axis of a rotation, through its point nearest to `center`, with the order n <= max_order
+// of its angle 2 pi m / n (m, n coprime); none for the identity, a screw motion, or an angle that
+// is no such fraction.
+inline std::optional<Axis_candidate> axis_of(const Rigid_motion& r, int max_order, const Eigen::Vector3d& center,
+                                             double radius)
+{
+  const Eigen::Matrix3d& l = r.linear;
+  const double angle = std::acos(std::clamp((l.trace() - 1.) / 2., -1., 1.));
+  Eigen::Vector3d direction(l(2, 1) - l(1, 2), l(0, 2) - l(2, 0), l(1, 0) - l(0, 1));
+  if(direction.norm() < 1e-6) { // angle 0 or pi: (L + I) / 2 = a a^T for a half turn
+    const Eigen::Matrix3d half_turn = (l + Eigen::Matrix3d::Identity()) / 2.;
+    Eigen::Index column = 0;
+    half_turn.diagonal().maxCoeff(&column);
+    direction = half_turn.col(column);
+  }
+  if(angle < closure_angle_tolerance || !(direction.norm() > 0.)) return std::nullopt;
+  direction.normalize();
+  if(std::abs(r.translation.dot(direction)) > closure_screw_tolerance * radius) return std::nullopt;
+  int order = 0;
+  for(int n = 2; n <= max_order && order == 0; ++n)
+    for(int m = 1; 2 * m <= n && order == 0; ++m)
+      if(std::gcd(m, n) == 1 && std::abs(angle - 2. * CGAL_PI * double(m) / double(n)) < closure_angle_tolerance) order = n;
+  if(order == 0) return std::nullopt;
+  // The axis point p solves (I - L) p = t; the least-squares solution of least norm from the
+  // centre is the axis's point nearest to it.
+  const Eigen::Matrix3d fixed = Eigen::Matrix3d::Identity() - l;
+  const Eigen::Vector3d shift = fixed.jacobiSvd(Eigen::ComputeFullU | Eigen::ComputeFullV)
+                                  .solve(r.translation - fixed * center);
+  return Axis_candidate{{center + shift, direction}, order, 0.};
+}
+
+// The axes the found ones generate and that are not among them (`same` tells two axes apart):
+// the images of each discrete axis by the rotations about each other, and the axes of the
+// products of their generators. `found`: discrete axes with their orders (continuous ones are
+// left out: their images are infinitely many).
+inline std::vector<Axis_candidate> group_closure(const std::vector<Axis_candidate>& found, int max_order,
+                                                 const Eigen::Vector3d& center, double radius,
+                                                 const std::function<bool(const Daxis&, const Daxis&)>& same)
+{
+  std::vector<Axis_candidate> result;
+  auto add = [&](const Axis_candidate& c) {
+    auto is_c = [&](const Axis_candidate& other) { return same(other.axis, c.axis); };
+    if(std::none_of(found.begin(), found.end(), is_c) && std::none_of(result.begin(), result.end(), is_c))
+      result.push_back(c);
+  };
+  for(const Axis_candidate& a : found)
+    for(const Axis_candidate& b : found) {
+      if(&a == &b || a.order < 2 || b.order < 2) continue;
+      const Rigid_motion rb = b.axis.rotation(2. * CGAL_PI / double(b.order));
+      Rigid_motion power = rb;
+      for(int j = 1; j < b.order; ++j, power = compose(rb, power))
+        add({{power(a.axis.point), (power.linear * a.axis.direction).normalized()}, a.order, 0.});
+      if(const std::optional<Axis_candidate> product =
+           axis_of(compose(a.axis.rotation(2. * CGAL_PI / double(a.order)), rb), max_order, center, radius))
+        add(*product);
+    }
+  return result;
+}
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_GROUP_CLOSURE_H

@@ -1,0 +1,101 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_ROTATIONS_OF_SHAPE_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_ROTATIONS_OF_SHAPE_H
+
+// The rotational symmetries of a triangle surface or of a point set: what the search reads
+// (samples and their normals, the GEDT and a coarse one, the centre of mass, the closest-point
+// matchers), prepared from the named parameters.
+
+#include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
+#include <CGAL/Symmetry_transform/internal/common/defaults.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
+#include <CGAL/Symmetry_transform/internal/detection/detection.h>
+#include <CGAL/Symmetry_transform/internal/grid/settings.h>
+#include <CGAL/Symmetry_transform/internal/rotation/point_normals.h>
+#include <CGAL/Symmetry_transform/internal/rotation/rotation_detection.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL::Symmetry_transform::internal {
+
+// The coarse stage reads a GEDT at 32^3 (or the user's resolution if lower): its width, about
+// 0.13 R, is the reach of the axis point search and of the pattern search.
+constexpr long coarse_grid_resolution = 32;
+
+template <typename NamedParameters>
+int max_order(const NamedParameters& np)
+{
+  const int k = int(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_max_order), defaults::max_order));
+  if(k < 2) throw std::invalid_argument("Symmetry_transform: max_order must be at least 2, not " + std::to_string(k));
+  return k;
+}
+
+template <typename NamedParameters>
+long coarse_resolution(const NamedParameters& np)
+{
+  const long n = long(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_grid_resolution),
+                                                   defaults::grid_resolution));
+  return (std::min)(n, coarse_grid_resolution);
+}
+
+// The normal of the shape at each sample, from the matcher.
+template <typename Matcher>
+std::vector<Eigen::Vector3d> normals_at(const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher)
+{
+  std::vector<Eigen::Vector3d> normals;
+  for(const Eigen::Vector3d& x : samples) {
+    typename Matcher::Hint none;
+    normals.push_back(matcher.closest(x, none).second);
+  }
+  return normals;
+}
+
+template <typename GT, typename NamedParameters>
+std::vector<Rotational_symmetry<GT>> rotations_of_surface(const Triangle_surface<GT>& surface, int max_order,
+                                                          const std::vector<Axis_candidate>& extra, const NamedParameters& np)
+{
+  const auto coarse_np = np.grid_resolution(int(coarse_resolution(np)));
+  const Voxel_grid<GT> coarse = gaussian_distance_transform_of_triangles<GT>(surface.triangles, coarse_np);
+  const std::vector<Eigen::Vector3d> samples = surface_samples(surface.triangles, np);
+  const std::vector<Eigen::Vector3d> normals = normals_at(samples, surface.field);
+  const Mass_distribution mass(surface.triangles);
+  const Rotation_search<GT, Triangle_matcher, Closest_triangle_field> search{
+    surface.gedt, coarse, grid_settings(coarse_np, coarse.radius()).sigma(), samples, normals, mass, surface.matcher,
+    surface.field, isp_settings(np, surface.gedt), max_order,
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
+  return rotational_symmetries(search, extra);
+}
+
+template <typename PointRange, typename NamedParameters>
+std::vector<Rotational_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
+rotations_of_points(const PointRange& points, int max_order, const NamedParameters& np)
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits GT;
+  const std::vector<Dpoint> input = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const Shape_frame frame = frame_of_points(input);
+  const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(input, frame, grid_settings(np, frame.radius));
+  const auto coarse_np = np.grid_resolution(int(coarse_resolution(np)));
+  const Voxel_grid<GT> coarse =
+    gaussian_distance_transform_of_points<GT>(input, frame, grid_settings(coarse_np, frame.radius));
+  const Point_normal_matcher matcher(input);
+  const std::vector<Eigen::Vector3d> samples = point_samples(input, np);
+  const std::vector<Eigen::Vector3d> normals = normals_at(samples, matcher);
+  const Mass_distribution mass(input);
+  const Rotation_search<GT, Point_normal_matcher, Point_normal_matcher> search{
+    gedt, coarse, grid_settings(coarse_np, coarse.radius()).sigma(), samples, normals, mass, matcher, matcher,
+    isp_settings(np, gedt), max_order,
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
+  return rotational_symmetries(search, {});
+}
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_ROTATION_ROTATIONS_OF_SHAPE_H
