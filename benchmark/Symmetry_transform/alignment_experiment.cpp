@@ -17,8 +17,9 @@
 // order of the frames and, as equally strong planes may come in either order, for the best
 // pairing of the axes (the smallest largest angle over the 6 permutations).
 //
-// The symmetry frame is computed by the rule of symmetry_frame() and, for comparison, by the
-// other rules of internal/alignment/frame_rules.h (--rules), all from one detection of the
+// The symmetry frame is computed by the rule of symmetry_frame() (greedy), by that of its
+// partial_data(true) (joint_var_prior_inertia) and, for comparison, by the other rules of
+// internal/alignment/joint_frame.h (--rules), all from one detection of the
 // principal symmetries per scan and per whole shape (cached in --cache DIR if given, so that
 // rules are compared without detecting again). Prints, per rule, a row per shape, the
 // histograms of both errors, the fraction of scans whose centre of symmetry is closer to its
@@ -209,16 +210,20 @@ STI::Frame_choice greedy_rule(const STI::Mass_distribution& mass, const Detectio
   return STI::greedy_frame_choice(mass, planes, d.prst);
 }
 
-Rule rule_of(bool joint, bool support_weighted, bool least_squares_center, bool accumulate = false,
-             bool order_by_accumulated = false, int variance_order = 0, double mass_prior = 0., double pca_below = 0.,
-             bool blend_only_when_weak = false)
+Rule rule_of(const STI::Frame_rule& rule)
 {
-  const STI::Frame_rule rule{joint,         support_weighted, least_squares_center, accumulate,          order_by_accumulated,
-                             variance_order, mass_prior,       pca_below,            blend_only_when_weak};
   return [rule](const STI::Mass_distribution& mass, const Detection& d) {
     if(d.symmetries.empty()) return STI::Frame_choice{{}, STI::pca_frame(mass)};
     return STI::frame_choice(mass, d.symmetries, d.prst, rule);
   };
+}
+
+Rule rule_of(bool joint, bool support_weighted, bool least_squares_center, bool accumulate = false,
+             bool order_by_accumulated = false, int variance_order = 0, double mass_prior = 0., double pca_below = 0.,
+             bool blend_only_when_weak = false)
+{
+  return rule_of(STI::Frame_rule{joint, support_weighted, least_squares_center, accumulate, order_by_accumulated,
+                                 variance_order, mass_prior, pca_below, blend_only_when_weak});
 }
 
 std::map<std::string, Rule> rules()
@@ -250,7 +255,7 @@ std::map<std::string, Rule> rules()
           {"joint_var", rule_of(true, false, false, false, false, 1)},
           {"joint_var_inertia", rule_of(true, false, false, false, false, 1, 0., 1.)},
           {"joint_var_inertia8", rule_of(true, false, false, false, false, 1, 0., 0.8)},
-          {"joint_var_prior_inertia", rule_of(true, false, true, false, false, 1, 0.2, 1.)},
+          {"joint_var_prior_inertia", rule_of(STI::partial_data_rule)}, // symmetry_frame(..., partial_data(true))
           {"joint_var_weak_prior_inertia", rule_of(true, false, true, false, false, 1, 0.2, 1., true)},
           {"joint_var_weak_prior_inertia95", rule_of(true, false, true, false, false, 1, 0.2, 0.95, true)},
           {"joint_var_weak_prior_inertia9", rule_of(true, false, true, false, false, 1, 0.2, 0.9, true)},

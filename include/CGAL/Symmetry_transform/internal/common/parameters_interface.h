@@ -29,6 +29,9 @@ CGAL_add_named_parameter(st_smoothing_lambda_t, st_smoothing_lambda, smoothing_l
 CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentation_tree)
 // end of segmentation
 
+// Alignment (symmetry_alignment.h)
+CGAL_add_named_parameter(st_partial_data_t, st_partial_data, partial_data)
+
 // Viewpoint selection (viewpoint_selection.h)
 CGAL_add_named_parameter(st_number_of_directions_t, st_number_of_directions, number_of_directions)
 
