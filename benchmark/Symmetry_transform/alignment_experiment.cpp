@@ -2,23 +2,34 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// The alignment experiment of the thesis (section 4.1.3) on CGAL's sample meshes: how far the
-// frame of a partial scan is from the frame of the whole mesh, for the symmetry frame (centre of
-// symmetry, principal symmetry axes) and for the PCA frame (centre of mass, principal axes).
+// The alignment experiment of the thesis (section 4.1.3): how far the frame of a partial scan is
+// from the frame of the whole shape, for the symmetry frame (centre of symmetry, principal
+// symmetry axes) and for the PCA frame (centre of mass, principal axes). Two sets: CGAL's sample
+// meshes (--set demo) and man-made objects built in code with perfect symmetries, like the
+// thesis's models (--set man-made, test/Symmetry_transform/include/Symmetry_transform_man_made_shapes.h).
 //
-// Per mesh, 8 virtual range scans: a scanner at each corner of a cube around the mesh, at twice
+// Per shape, 8 virtual range scans: a scanner at each corner of a cube around the shape, at twice
 // the diagonal of the bounding box from its centre, looking at the centre, with a field of view
 // of 0.4 radian sampled by a square grid of rays (--rays per side); each ray that hits the mesh
 // (first intersection in a CGAL::AABB_tree) gives a point. Errors of a scan's frame against the
-// whole mesh's: translational, |c_scan - c_mesh| / R (R the radius of the mesh); rotational, the
-// largest angle between corresponding axes, each axis taken as a line (no sign), in the order of
-// the frames and, as equally strong planes may come in either order, for the best pairing of the
-// axes (the smallest largest angle over the 6 permutations). Prints a row per
-// mesh, the histograms of both errors, and the fraction of scans where the centre of symmetry is
-// closer to its whole-mesh value than the centre of mass is to its own (the thesis: 90 %, and
-// 1.5 times closer on average).
+// whole shape's: translational, |c_scan - c_whole| / R (R the radius of the shape); rotational,
+// the largest angle between corresponding axes, each axis taken as a line (no sign), in the
+// order of the frames and, as equally strong planes may come in either order, for the best
+// pairing of the axes (the smallest largest angle over the 6 permutations).
 //
-// usage: alignment_experiment [--meshes a.off,b.off,...] [--resolution N] [--rays N]
+// The symmetry frame is computed by the rule of symmetry_frame() (greedy), by that of its
+// partial_data(true) (joint_var_prior_inertia) and, for comparison, by the other rules of
+// internal/alignment/joint_frame.h (--rules), all from one detection of the
+// principal symmetries per scan and per whole shape (cached in --cache DIR if given, so that
+// rules are compared without detecting again). Prints, per rule, a row per shape, the
+// histograms of both errors, the fraction of scans whose centre of symmetry is closer to its
+// whole-shape value than the centre of mass is to its own (the thesis: 90 %, and 1.5 times closer
+// on average) and the median rotational errors; with --diagnostics, per scan, why its frame
+// departs from the whole's (the planes chosen, their sources, the whole's planes in the scan's
+// transform); with --errors FILE, every scan's errors (for plot_alignment_histograms.py).
+//
+// usage: alignment_experiment [--set demo|man-made] [--meshes a.off,b.off,...] [--resolution N]
+//        [--rays N] [--cache DIR] [--rules greedy,joint,...] [--diagnostics 1] [--errors FILE]
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -31,32 +42,43 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Symmetry_transform/symmetry_alignment.h>
+#include <CGAL/Symmetry_transform/internal/alignment/joint_frame.h>
+
+#include <Symmetry_transform_man_made_shapes.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "benchmark_utilities.h"
+#include "detection_cache.h"
 
 namespace {
 
-using benchmark_utilities::split;
+using benchmark_utilities::median;
 using benchmark_utilities::mesh_path;
+using benchmark_utilities::split;
+using detection_cache::cached;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
 typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
-typedef CGAL::Symmetry_transform::Symmetry_frame<K> Frame;
 namespace ST = CGAL::Symmetry_transform;
+namespace STI = CGAL::Symmetry_transform::internal;
 namespace PMP = CGAL::Polygon_mesh_processing;
+typedef STI::Eigen_frame Frame;
+typedef STI::Detection<K> Detection;
 
 const char* default_meshes = "bull.off,cow.off,camel.off,dino.off,elephant.off,triceratops.off,homer.off,"
                              "lion.off,bear.off,armadillo.off,man.off,mannequin-devil.off,diplodocus.off,"
@@ -68,6 +90,10 @@ int positive(const std::string& option, const std::string& text)
     throw std::invalid_argument(option + " expects a positive integer, not '" + text + "'");
   return std::stoi(text);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Scans
+// ---------------------------------------------------------------------------------------------
 
 // The points of a range scan from `eye` looking at `target`: a rays x rays grid over a square
 // field of view of 0.4 radian.
@@ -89,13 +115,36 @@ std::vector<K::Point_3> range_scan(const Tree& tree, const K::Point_3& eye, cons
   return points;
 }
 
+// The 8 scans of a mesh, from the corners of a cube around its bounding box (fewer than 100
+// points: left out, as empty).
+std::vector<std::vector<K::Point_3>> corner_scans(const Mesh& mesh, int rays)
+{
+  const CGAL::Bbox_3 box = PMP::bbox(mesh);
+  const K::Point_3 center((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const Tree tree(faces(mesh).first, faces(mesh).second, mesh);
+  std::vector<std::vector<K::Point_3>> scans;
+  for(int corner = 0; corner < 8; ++corner) {
+    const K::Vector_3 direction((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1);
+    const K::Point_3 eye = center + (2. * diagonal / std::sqrt(3.)) * direction;
+    scans.push_back(range_scan(tree, eye, center, rays));
+    if(scans.back().size() < 100) scans.back().clear();
+  }
+  return scans;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors
+// ---------------------------------------------------------------------------------------------
+
 // The largest angle, in degrees, between the axes of a and the axes of b in the order `order`,
 // taken as lines.
 double axes_angle(const Frame& a, const Frame& b, const std::array<int, 3>& order = {0, 1, 2})
 {
   double worst = 0.;
   for(int k = 0; k < 3; ++k) {
-    const double c = std::abs(a.axes[std::size_t(k)] * b.axes[std::size_t(order[std::size_t(k)])]);
+    const double c = std::abs(a.axes[std::size_t(k)].dot(b.axes[std::size_t(order[std::size_t(k)])]));
     worst = std::max(worst, std::acos(std::min(1., c)) * 180. / CGAL_PI);
   }
   return worst;
@@ -126,7 +175,7 @@ struct Histogram
 
 void print_histograms(const std::string& what, const Histogram& symmetry, const Histogram& pca, const std::string& unit)
 {
-  std::cout << "\n" << what << " | symmetry frame | PCA frame |\n|---|---:|---:|\n";
+  std::cout << "\n| " << what << " | symmetry frame | PCA frame |\n|---|---:|---:|\n";
   for(std::size_t i = 0; i < symmetry.edges.size(); ++i) {
     std::ostringstream bin;
     if(i + 1 < symmetry.edges.size())
@@ -137,30 +186,125 @@ void print_histograms(const std::string& what, const Histogram& symmetry, const 
   }
 }
 
-} // namespace
+// The errors of one scan's frame: translational (% R), rotational in order and paired (degrees).
+struct Errors
+{
+  double translation, rotation, paired;
+};
 
-int main(int argc, char** argv)
-try {
-  std::string meshes = default_meshes;
-  int resolution = 64, rays = 120;
-  for(int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if(a + 1 == argc) throw std::invalid_argument(arg + " expects a value");
-    const std::string value = argv[++a];
-    if(arg == "--meshes") meshes = value;
-    else if(arg == "--resolution") resolution = positive(arg, value);
-    else if(arg == "--rays") rays = positive(arg, value);
-    else throw std::invalid_argument("unknown option: " + arg);
+Errors errors(const Frame& scan, const Frame& whole, double radius)
+{
+  return {100. * (scan.center - whole.center).norm() / radius, axes_angle(scan, whole), unordered_axes_angle(scan, whole)};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rules and their tallies
+// ---------------------------------------------------------------------------------------------
+
+typedef std::function<STI::Frame_choice(const STI::Mass_distribution&, const Detection&)> Rule;
+
+STI::Frame_choice greedy_rule(const STI::Mass_distribution& mass, const Detection& d)
+{
+  const std::vector<STI::Dplane> planes = STI::planes_of(d.symmetries);
+  if(planes.empty()) return {{}, STI::pca_frame(mass)};
+  return STI::greedy_frame_choice(mass, planes, d.prst);
+}
+
+Rule rule_of(const STI::Frame_rule& rule)
+{
+  return [rule](const STI::Mass_distribution& mass, const Detection& d) {
+    if(d.symmetries.empty()) return STI::Frame_choice{{}, STI::pca_frame(mass)};
+    return STI::frame_choice(mass, d.symmetries, d.prst, rule);
+  };
+}
+
+Rule rule_of(bool joint, bool support_weighted, bool least_squares_center, bool accumulate = false,
+             bool order_by_accumulated = false, int variance_order = 0, double mass_prior = 0., double pca_below = 0.,
+             bool blend_only_when_weak = false)
+{
+  return rule_of(STI::Frame_rule{joint, support_weighted, least_squares_center, accumulate, order_by_accumulated,
+                                 variance_order, mass_prior, pca_below, blend_only_when_weak});
+}
+
+std::map<std::string, Rule> rules()
+{
+  return {{"greedy", greedy_rule},
+          {"greedy_ls", rule_of(false, false, true)},
+          {"joint", rule_of(true, false, false)},
+          {"joint_support", rule_of(true, true, false)},
+          {"joint_ls", rule_of(true, false, true)},
+          {"joint_support_ls", rule_of(true, true, true)},
+          {"cluster", rule_of(true, false, false, true)},
+          {"cluster_ls", rule_of(true, false, true, true)},
+          {"cluster_support_ls", rule_of(true, true, true, true)},
+          {"cluster_ordered_ls", rule_of(true, false, true, true, true)},
+          {"cluster_support_ordered_ls", rule_of(true, true, true, true, true)},
+          {"joint_support_ls_var", rule_of(true, true, true, false, false, 1)},
+          {"joint_support_ls_tol", rule_of(true, true, true, false, false, 2)},
+          {"cluster_support_ls_var", rule_of(true, true, true, true, false, 1)},
+          {"cluster_support_ls_tol", rule_of(true, true, true, true, false, 2)},
+          {"greedy_var", rule_of(false, false, false, false, false, 1)},
+          {"greedy_tol", rule_of(false, false, false, false, false, 2)},
+          {"joint_support_ls_var_prior", rule_of(true, true, true, false, false, 1, 0.2)},
+          {"cluster_support_ls_var_prior", rule_of(true, true, true, true, false, 1, 0.2)},
+          {"cluster_support_ls_var_prior5", rule_of(true, true, true, true, false, 1, 0.5)},
+          {"cluster_support_ls_var_prior_inertia", rule_of(true, true, true, true, false, 1, 0.2, 1.)},
+          {"cluster_support_ls_var_prior_inertia9", rule_of(true, true, true, true, false, 1, 0.2, 0.9)},
+          {"cluster_support_ls_var_prior_inertia8", rule_of(true, true, true, true, false, 1, 0.2, 0.8)},
+          {"cluster_support_ls_prior_inertia", rule_of(true, true, true, true, false, 0, 0.2, 1.)},
+          {"joint_var", rule_of(true, false, false, false, false, 1)},
+          {"joint_var_inertia", rule_of(true, false, false, false, false, 1, 0., 1.)},
+          {"joint_var_inertia8", rule_of(true, false, false, false, false, 1, 0., 0.8)},
+          {"joint_var_prior_inertia", rule_of(STI::partial_data_rule)}, // symmetry_frame(..., partial_data(true))
+          {"joint_var_weak_prior_inertia", rule_of(true, false, true, false, false, 1, 0.2, 1., true)},
+          {"joint_var_weak_prior_inertia95", rule_of(true, false, true, false, false, 1, 0.2, 0.95, true)},
+          {"joint_var_weak_prior_inertia9", rule_of(true, false, true, false, false, 1, 0.2, 0.9, true)},
+          {"joint_var_weak_prior_inertia8", rule_of(true, false, true, false, false, 1, 0.2, 0.8, true)},
+          {"joint_var_weak_prior5_inertia9", rule_of(true, false, true, false, false, 1, 0.5, 0.9, true)},
+          {"greedy_var_inertia", rule_of(false, false, false, false, false, 1, 0., 1.)},
+          {"greedy_ls_var_prior_inertia", rule_of(false, false, true, false, false, 1, 0.2, 1.)}};
+}
+
+// What a rule (or PCA) gave over all scans of a set.
+struct Tally
+{
+  std::vector<Errors> scans;
+  std::vector<std::string> rows;
+  Histogram translation{{0, 1, 2, 5, 10, 20}}, rotation{{0, 1, 5, 15, 45}};
+  void add(const Errors& e)
+  {
+    scans.push_back(e);
+    translation.add(e.translation);
+    rotation.add(e.rotation);
   }
-  std::cout << "Command: `alignment_experiment --meshes " << meshes << " --resolution " << resolution << " --rays "
-            << rays << "`\n\n| mesh | faces | scans | points per scan | centre of symmetry closer | mean translational "
-            << "error, symmetry / PCA (% R) | mean rotational error, symmetry / PCA (deg) | the same, axes paired "
-            << "at best (deg) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n" << std::fixed << std::setprecision(2);
-  const auto np = CGAL::parameters::grid_resolution(resolution).random_seed(1);
-  Histogram translation_symmetry({0, 1, 2, 5, 10, 20}), translation_pca({0, 1, 2, 5, 10, 20});
-  Histogram rotation_symmetry({0, 1, 5, 15, 45}), rotation_pca({0, 1, 5, 15, 45});
-  int scans = 0, symmetry_closer = 0;
-  double sum_symmetry = 0., sum_pca = 0.;
+  template <typename F>
+  std::vector<double> list(F f) const
+  {
+    std::vector<double> v;
+    for(const Errors& e : scans) v.push_back(f(e));
+    return v;
+  }
+};
+
+// A shape of a set: its name, its mesh, and the planes it has by construction (man-made set).
+struct Shape
+{
+  std::string name;
+  Mesh mesh;
+  std::vector<K::Plane_3> planes;
+};
+
+std::vector<Shape> shapes_of_set(const std::string& set, const std::string& meshes)
+{
+  std::vector<Shape> shapes;
+  if(set == "man-made") {
+    for(const auto& make : st_man_made::man_made_shapes()) {
+      st_man_made::Man_made_shape s = make();
+      shapes.push_back({s.name, std::move(s.mesh), s.planes});
+    }
+    return shapes;
+  }
+  if(set != "demo") throw std::invalid_argument("--set expects demo or man-made, not '" + set + "'");
   for(const std::string& name : split(meshes)) {
     Mesh mesh;
     const std::string path = mesh_path(name);
@@ -169,59 +313,215 @@ try {
       continue;
     }
     if(!CGAL::is_triangle_mesh(mesh)) PMP::triangulate_faces(mesh);
-    const Frame whole_symmetry = ST::symmetry_frame(mesh, np), whole_pca = ST::pca_frame(mesh);
-    double radius = 0.;
-    for(const auto v : vertices(mesh))
-      radius = std::max(radius, std::sqrt(CGAL::squared_distance(whole_pca.center, mesh.point(v))));
-    const CGAL::Bbox_3 box = PMP::bbox(mesh);
-    const K::Point_3 center((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
-    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                      CGAL::square(box.zmax() - box.zmin()));
-    Tree tree(faces(mesh).first, faces(mesh).second, mesh);
-    int mesh_scans = 0, mesh_closer = 0;
-    double mesh_translation[2] = {0., 0.}, mesh_rotation[2] = {0., 0.}, mesh_unordered[2] = {0., 0.};
-    std::size_t points_total = 0;
-    for(int corner = 0; corner < 8; ++corner) {
-      const K::Vector_3 direction((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1);
-      const K::Point_3 eye = center + (2. * diagonal / std::sqrt(3.)) * direction;
-      const std::vector<K::Point_3> scan = range_scan(tree, eye, center, rays);
-      if(scan.size() < 100) continue;
-      const Frame scan_symmetry = ST::symmetry_frame_of_points(scan, np), scan_pca = ST::pca_frame_of_points(scan);
-      const double t_symmetry = 100. * std::sqrt(CGAL::squared_distance(scan_symmetry.center, whole_symmetry.center)) / radius;
-      const double t_pca = 100. * std::sqrt(CGAL::squared_distance(scan_pca.center, whole_pca.center)) / radius;
-      const double r_symmetry = axes_angle(scan_symmetry, whole_symmetry), r_pca = axes_angle(scan_pca, whole_pca);
-      translation_symmetry.add(t_symmetry);
-      translation_pca.add(t_pca);
-      rotation_symmetry.add(r_symmetry);
-      rotation_pca.add(r_pca);
-      mesh_closer += t_symmetry < t_pca;
-      mesh_translation[0] += t_symmetry;
-      mesh_translation[1] += t_pca;
-      mesh_rotation[0] += r_symmetry;
-      mesh_rotation[1] += r_pca;
-      mesh_unordered[0] += unordered_axes_angle(scan_symmetry, whole_symmetry);
-      mesh_unordered[1] += unordered_axes_angle(scan_pca, whole_pca);
-      points_total += scan.size();
-      ++mesh_scans;
-    }
-    if(mesh_scans == 0) continue;
-    std::cout << "| " << name << " | " << num_faces(mesh) << " | " << mesh_scans << " | " << points_total / mesh_scans
-              << " | " << mesh_closer << " / " << mesh_scans << " | " << mesh_translation[0] / mesh_scans << " / "
-              << mesh_translation[1] / mesh_scans << " | " << mesh_rotation[0] / mesh_scans << " / "
-              << mesh_rotation[1] / mesh_scans << " | " << mesh_unordered[0] / mesh_scans << " / "
-              << mesh_unordered[1] / mesh_scans << " |" << std::endl;
-    scans += mesh_scans;
-    symmetry_closer += mesh_closer;
-    sum_symmetry += mesh_translation[0];
-    sum_pca += mesh_translation[1];
+    shapes.push_back({name, std::move(mesh), {}});
   }
-  if(scans == 0) throw std::runtime_error("no scan (are the meshes in " SYMMETRY_TRANSFORM_DATA_DIR "/meshes?)");
-  print_histograms("translational error", translation_symmetry, translation_pca, "% R");
-  print_histograms("rotational error", rotation_symmetry, rotation_pca, "deg");
-  std::cout << "\nCentre of symmetry closer than the centre of mass in " << symmetry_closer << " of " << scans
-            << " scans (" << 100. * symmetry_closer / scans << " %); mean translational error " << sum_symmetry / scans
-            << " % R (symmetry) vs " << sum_pca / scans << " % R (PCA): " << sum_pca / sum_symmetry
-            << " times closer on average.\n";
+  return shapes;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Diagnostics
+// ---------------------------------------------------------------------------------------------
+
+std::string source_of(const STI::Frame_plane& p)
+{
+  return p.principal == STI::searched_plane ? "searched" : "P" + std::to_string(p.principal + 1);
+}
+
+// The label of a plane of a scan: the whole's frame plane (W1, W2, W3) it matches within 10
+// degrees and 5 % R, or "-".
+std::string match(const STI::Dplane& p, const STI::Frame_choice& whole, double radius)
+{
+  for(int i = 0; i < 3; ++i) {
+    const STI::Dplane& w = whole.planes[std::size_t(i)].plane;
+    const double c = p.normal.dot(w.normal), s = c < 0. ? -1. : 1.;
+    if(std::abs(c) >= std::cos(10. * CGAL_PI / 180.) &&
+       std::abs(p.offset - s * w.offset - (p.normal - s * w.normal).dot(whole.frame.center)) < 0.05 * radius)
+      return "W" + std::to_string(i + 1);
+  }
+  return "-";
+}
+
+void print_diagnostics(int corner, std::size_t points, const Detection& scan, const STI::Frame_choice& choice,
+                       const Detection& whole, const STI::Frame_choice& whole_choice, const Errors& e,
+                       const Errors& pca, double radius)
+{
+  std::cout << "  scan " << corner << " (" << points << " points): translation " << e.translation << " % R (PCA "
+            << pca.translation << "), rotation " << e.rotation << " deg (PCA " << pca.rotation << "), paired " << e.paired
+            << "\n    principal planes of the scan (M, support, match):";
+  for(std::size_t i = 0; i < scan.symmetries.size(); ++i)
+    std::cout << " P" << i + 1 << " " << scan.symmetries[i].symmetry << "/" << scan.symmetries[i].support << "/"
+              << match(STI::to_dplane(scan.symmetries[i].plane), whole_choice, radius);
+  std::cout << "\n    frame planes of the scan:";
+  for(const STI::Frame_plane& p : choice.planes)
+    std::cout << " " << source_of(p) << " (" << match(p.plane, whole_choice, radius) << ", PRST "
+              << scan.prst.value(STI::to_plane<K>(p.plane)) << ")";
+  std::cout << "\n    the whole's frame planes, in the scan's transform (whole's transform):";
+  for(const STI::Frame_plane& p : whole_choice.planes) {
+    const K::Plane_3 plane = STI::to_plane<K>(p.plane);
+    std::cout << " " << source_of(p) << " " << scan.prst.value(plane) << " (" << whole.prst.value(plane) << ")";
+  }
+  std::cout << "; strongest bin of the scan " << scan.prst.value(scan.prst.maximum()) << "\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// The experiment
+// ---------------------------------------------------------------------------------------------
+
+struct Options
+{
+  std::string set = "demo", meshes = default_meshes, cache, errors_file;
+  std::vector<std::string> rules = {"greedy"};
+  int resolution = 64, rays = 120;
+  bool diagnostics = false;
+};
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  for(const auto& [arg, value] : benchmark_utilities::option_pairs(argc, argv)) {
+    if(arg == "--set") o.set = value;
+    else if(arg == "--meshes") o.meshes = value;
+    else if(arg == "--resolution") o.resolution = positive(arg, value);
+    else if(arg == "--rays") o.rays = positive(arg, value);
+    else if(arg == "--cache") o.cache = value;
+    else if(arg == "--rules") o.rules = split(value);
+    else if(arg == "--diagnostics") o.diagnostics = value != "0";
+    else if(arg == "--errors") o.errors_file = value;
+    else throw std::invalid_argument("unknown option: " + arg);
+  }
+  const std::map<std::string, Rule> known = rules();
+  for(const std::string& r : o.rules)
+    if(!known.count(r)) throw std::invalid_argument("unknown rule: " + r);
+  return o;
+}
+
+double radius_of(const Mesh& mesh, const Eigen::Vector3d& center)
+{
+  double radius = 0.;
+  for(const auto v : vertices(mesh)) radius = std::max(radius, (STI::to_eigen(STI::to_dpoint(mesh.point(v))) - center).norm());
+  return radius;
+}
+
+std::string fixed(double x)
+{
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << x;
+  return out.str();
+}
+
+// A row of the per-shape table of a rule: scans, closer, mean errors of symmetry / PCA.
+std::string row(const Shape& shape, std::size_t points, const std::vector<Errors>& sym, const std::vector<Errors>& pca,
+                double whole_vs_truth)
+{
+  const std::size_t n = sym.size();
+  int closer = 0;
+  double t[2] = {0, 0}, r[2] = {0, 0}, p[2] = {0, 0};
+  for(std::size_t i = 0; i < n; ++i) {
+    closer += sym[i].translation < pca[i].translation;
+    t[0] += sym[i].translation, t[1] += pca[i].translation;
+    r[0] += sym[i].rotation, r[1] += pca[i].rotation;
+    p[0] += sym[i].paired, p[1] += pca[i].paired;
+  }
+  std::ostringstream out;
+  out << "| " << shape.name << " | " << num_faces(shape.mesh) << " | " << n << " | " << points / std::max<std::size_t>(n, 1)
+      << " | " << closer << " / " << n << " | " << fixed(t[0] / n) << " / " << fixed(t[1] / n) << " | " << fixed(r[0] / n)
+      << " / " << fixed(r[1] / n) << " | " << fixed(p[0] / n) << " / " << fixed(p[1] / n) << " |";
+  if(whole_vs_truth >= 0.) out << " " << fixed(whole_vs_truth) << " |";
+  return out.str();
+}
+
+// The largest angle between a true axis (the normals of the planes by construction, x y z) and
+// the nearest axis of the whole's frame; -1 with no plane by construction.
+double whole_versus_truth(const Shape& shape, const Frame& whole)
+{
+  if(shape.planes.empty()) return -1.;
+  Frame truth{whole.center, {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()}};
+  return unordered_axes_angle(whole, truth);
+}
+
+void print_summary(const std::string& rule, const Tally& sym, const Tally& pca, bool truth_column)
+{
+  std::cout << "\n### Rule `" << rule << "`\n\n| shape | faces | scans | points per scan | centre of symmetry closer | "
+            << "mean translational error, symmetry / PCA (% R) | mean rotational error, symmetry / PCA (deg) | the same, "
+            << "axes paired at best (deg) |" << (truth_column ? " whole's symmetry frame vs true axes, paired (deg) |" : "")
+            << "\n|---|---:|---:|---:|---:|---:|---:|---:|" << (truth_column ? "---:|" : "") << "\n";
+  for(const std::string& r : sym.rows) std::cout << r << "\n";
+  print_histograms("translational error", sym.translation, pca.translation, "% R");
+  print_histograms("rotational error", sym.rotation, pca.rotation, "deg");
+  std::size_t closer = 0;
+  double sum[2] = {0, 0};
+  for(std::size_t i = 0; i < sym.scans.size(); ++i) {
+    closer += sym.scans[i].translation < pca.scans[i].translation;
+    sum[0] += sym.scans[i].translation, sum[1] += pca.scans[i].translation;
+  }
+  const std::size_t n = sym.scans.size();
+  const auto rotation = [](const Errors& e) { return e.rotation; };
+  const auto paired = [](const Errors& e) { return e.paired; };
+  const auto translation = [](const Errors& e) { return e.translation; };
+  std::cout << "\nRule `" << rule << "`: centre of symmetry closer than the centre of mass in " << closer << " of " << n
+            << " scans (" << fixed(100. * closer / n) << " %); mean translational error " << fixed(sum[0] / n)
+            << " % R (symmetry) vs " << fixed(sum[1] / n) << " % R (PCA): " << fixed(sum[1] / sum[0])
+            << " times closer on average; median translational error " << fixed(median(sym.list(translation))) << " vs "
+            << fixed(median(pca.list(translation))) << " % R; median rotational error " << fixed(median(sym.list(rotation)))
+            << " deg vs " << fixed(median(pca.list(rotation))) << " (PCA), paired at best "
+            << fixed(median(sym.list(paired))) << " vs " << fixed(median(pca.list(paired))) << ".\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+try {
+  const Options o = parse(argc, argv);
+  std::cout << "Command: `alignment_experiment --set " << o.set << (o.set == "demo" ? " --meshes " + o.meshes : "")
+            << " --resolution " << o.resolution << " --rays " << o.rays << "`\n" << std::fixed << std::setprecision(3);
+  const auto np = CGAL::parameters::grid_resolution(o.resolution).random_seed(1);
+  const std::map<std::string, Rule> known = rules();
+  std::map<std::string, Tally> tallies;
+  Tally pca;
+  std::ofstream errors_out;
+  if(!o.errors_file.empty()) errors_out.open(o.errors_file);
+  for(const Shape& shape : shapes_of_set(o.set, o.meshes)) {
+    const std::string key = o.set + "_" + shape.name + "_" + std::to_string(o.resolution);
+    const STI::Mass_distribution whole_mass = STI::mass_of_mesh(shape.mesh, np);
+    const Detection whole = cached(o.cache, key + "_whole", [&] { return STI::detection_of_mesh(shape.mesh, np); });
+    const Frame whole_pca = STI::pca_frame(whole_mass);
+    const double radius = radius_of(shape.mesh, whole_pca.center);
+    const std::vector<std::vector<K::Point_3>> scans = corner_scans(shape.mesh, o.rays);
+    std::map<std::string, STI::Frame_choice> whole_choice;
+    for(const std::string& r : o.rules) whole_choice[r] = known.at(r)(whole_mass, whole);
+    if(o.diagnostics) std::cout << "\n" << shape.name << "\n";
+    std::map<std::string, std::vector<Errors>> shape_errors;
+    std::vector<Errors> pca_errors;
+    std::size_t points = 0;
+    for(int corner = 0; corner < 8; ++corner) {
+      const std::vector<K::Point_3>& scan = scans[std::size_t(corner)];
+      if(scan.empty()) continue;
+      points += scan.size();
+      const STI::Mass_distribution mass = STI::mass_of_points(scan, np);
+      const Detection d = cached(o.cache, key + "_scan" + std::to_string(corner), [&] { return STI::detection_of_points(scan, np); });
+      const Errors p = errors(STI::pca_frame(mass), whole_pca, radius);
+      pca_errors.push_back(p);
+      pca.add(p);
+      for(const std::string& r : o.rules) {
+        const STI::Frame_choice choice = known.at(r)(mass, d);
+        const Errors e = errors(choice.frame, whole_choice[r].frame, radius);
+        shape_errors[r].push_back(e);
+        tallies[r].add(e);
+        if(o.diagnostics && r == o.rules.front())
+          print_diagnostics(corner, scan.size(), d, choice, whole, whole_choice[r], e, p, radius);
+        if(errors_out.is_open())
+          errors_out << o.set << " " << r << " " << shape.name << " " << corner << " " << e.translation << " " << e.rotation
+                     << " " << e.paired << " " << p.translation << " " << p.rotation << " " << p.paired << "\n";
+      }
+    }
+    if(pca_errors.empty()) continue;
+    for(const std::string& r : o.rules)
+      tallies[r].rows.push_back(row(shape, points, shape_errors[r], pca_errors,
+                                    whole_versus_truth(shape, whole_choice[r].frame)));
+    std::cerr << shape.name << " done\n";
+  }
+  if(pca.scans.empty()) throw std::runtime_error("no scan (are the meshes in " SYMMETRY_TRANSFORM_DATA_DIR "/meshes?)");
+  for(const std::string& r : o.rules) print_summary(r, tallies[r], pca, o.set == "man-made");
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {

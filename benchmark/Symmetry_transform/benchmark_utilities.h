@@ -2,14 +2,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Helpers shared by the benchmark programs: comma-separated lists, medians, sample mesh paths.
+// Helpers shared by the benchmark programs: comma-separated lists, medians, sample mesh paths,
+// "--name value" options.
 
 #ifndef SYMMETRY_TRANSFORM_BENCHMARK_UTILITIES_H
 #define SYMMETRY_TRANSFORM_BENCHMARK_UTILITIES_H
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace benchmark_utilities {
@@ -37,6 +40,17 @@ inline double median(std::vector<double> v)
 inline std::string mesh_path(const std::string& name)
 {
   return name.find('/') == std::string::npos ? std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + name : name;
+}
+
+// The "--name value" pairs of a command line, in order (a name without a value: invalid_argument).
+inline std::vector<std::pair<std::string, std::string>> option_pairs(int argc, char** argv)
+{
+  std::vector<std::pair<std::string, std::string>> pairs;
+  for(int a = 1; a < argc; a += 2) {
+    if(a + 1 == argc) throw std::invalid_argument(std::string(argv[a]) + " expects a value");
+    pairs.emplace_back(argv[a], argv[a + 1]);
+  }
+  return pairs;
 }
 
 } // namespace benchmark_utilities

@@ -7,6 +7,7 @@
 
 #include <CGAL/Symmetry_transform/Symmetry_frame.h>
 #include <CGAL/Symmetry_transform/internal/alignment/frame_rules.h>
+#include <CGAL/Symmetry_transform/internal/alignment/joint_frame.h>
 #include <CGAL/Symmetry_transform/internal/alignment/mass_distribution.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
@@ -24,6 +25,7 @@ namespace CGAL::Symmetry_transform {
  * axis is the normal of the strongest plane, the second that of the strongest plane nearly
  * perpendicular to it, the third their cross product, each turned towards more mass; a plane missing
  * among the principal ones is searched in the transform (see \ref SymmetryTransformAlignment).
+ * With `partial_data(true)`, the rule measured best on partial range scans is used instead.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
  * \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
@@ -33,6 +35,7 @@ namespace CGAL::Symmetry_transform {
  *           below, and those of `detect_principal_symmetries()`, to which they are passed on
  *
  * \cgalNamedParamsBegin
+ *   \cgalParamPartialData
  *   \cgalParamGeomTraits
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  * \cgalNamedParamsEnd
@@ -48,7 +51,7 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const internal::Mass_distribution mass = internal::mass_of_mesh(tm, np);
   const internal::Detection<GT> detection = internal::detection_of_mesh(tm, np);
-  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detection.symmetries, detection.prst));
+  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
 }
 
 /*!
@@ -67,6 +70,7 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
  *           and those of `detect_principal_symmetries_of_points()`, which are passed on to it
  *
  * \cgalNamedParamsBegin
+ *   \cgalParamPartialData
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{passed on to `detect_principal_symmetries_of_points()`: with normals\, ISP fits point to plane}
  *   \cgalParamGeomTraits
@@ -83,7 +87,7 @@ symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = p
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   const internal::Mass_distribution mass = internal::mass_of_points(points, np);
   const internal::Detection<GT> detection = internal::detection_of_points(points, np);
-  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detection.symmetries, detection.prst));
+  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
 }
 
 /*!
@@ -168,6 +172,7 @@ pca_frame_of_points(const PointRange& points, const NamedParameters& np = parame
  *           and those of `detect_principal_symmetries_of_triangle_soup()`, which are passed on to it
  *
  * \cgalNamedParamsBegin
+ *   \cgalParamPartialData
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
@@ -184,7 +189,7 @@ symmetry_frame_of_triangle_soup(const PointRange& points, const TriangleRange& t
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   const internal::Mass_distribution mass(internal::triangles_of_soup(points, triangles, np));
   const internal::Detection<GT> detection = internal::detection_of_triangle_soup(points, triangles, np);
-  return internal::to_symmetry_frame<GT>(internal::symmetry_frame(mass, detection.symmetries, detection.prst));
+  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
 }
 
 /*!

@@ -142,6 +142,64 @@ std::vector<Dplane> planes_of(const std::vector<Principal_symmetry<GT>>& symmetr
   return planes;
 }
 
+// A plane of a frame and where it comes from: the index of the principal symmetry, or
+// searched_plane if it was searched in the transform.
+constexpr int searched_plane = -1;
+struct Frame_plane
+{
+  Dplane plane;
+  int principal;
+};
+
+// The three planes of a frame, in the order of its axes, and the frame.
+struct Frame_choice
+{
+  std::array<Frame_plane, 3> planes;
+  Eigen_frame frame;
+};
+
+// The point where three planes meet.
+inline Eigen::Vector3d intersection(const std::array<Frame_plane, 3>& planes)
+{
+  Eigen::Matrix3d normals;
+  Eigen::Vector3d offsets;
+  for(int i = 0; i < 3; ++i) {
+    normals.row(i) = planes[std::size_t(i)].plane.normal.transpose();
+    offsets[i] = planes[std::size_t(i)].plane.offset;
+  }
+  return normals.partialPivLu().solve(offsets);
+}
+
+// The greedy rule of the thesis on the principal planes (strongest first, at least one): a
+// second or third plane missing among them is searched in the transform.
+template <typename GT>
+Frame_choice greedy_frame_choice(const Mass_distribution& mass, const std::vector<Dplane>& planes,
+                                 const Reflective_symmetry_transform<GT>& prst)
+{
+  const double second_tolerance = std::sin(second_plane_tolerance_degrees * CGAL_PI / 180.),
+               center_tolerance = std::cos(center_plane_tolerance_degrees * CGAL_PI / 180.);
+  Frame_choice choice;
+  choice.planes[0] = {planes.front(), 0};
+  std::array<Eigen::Vector3d, 3> axes;
+  axes[0] = planes.front().normal;
+  const auto second = std::find_if(planes.begin() + 1, planes.end(), [&](const Dplane& p) {
+    return std::abs(p.normal.dot(axes[0])) <= second_tolerance;
+  });
+  choice.planes[1] = second != planes.end() ? Frame_plane{*second, int(second - planes.begin())}
+                                            : Frame_plane{strongest_plane_perpendicular_to(prst, axes[0]), searched_plane};
+  const Eigen::Vector3d& n1 = choice.planes[1].plane.normal;
+  axes[1] = (n1 - n1.dot(axes[0]) * axes[0]).normalized();
+  axes[2] = axes[0].cross(axes[1]);
+  const auto third = std::find_if(planes.begin() + 1, planes.end(), [&](const Dplane& p) {
+    return int(&p - planes.data()) != choice.planes[1].principal && std::abs(p.normal.dot(axes[2])) >= center_tolerance;
+  });
+  choice.planes[2] = third != planes.end() ? Frame_plane{*third, int(third - planes.begin())}
+                                           : Frame_plane{strongest_plane_of_normal(prst, axes[2]).first, searched_plane};
+  const Eigen::Vector3d center = intersection(choice.planes);
+  choice.frame = {center, oriented_axes(axes, center, mass)};
+  return choice;
+}
+
 // The frame of the principal symmetries (strongest first), by the rules of symmetry_frame(): a
 // second or third plane missing among them is searched in the transform, as the thesis does.
 template <typename GT>
@@ -150,29 +208,7 @@ Eigen_frame symmetry_frame(const Mass_distribution& mass, const std::vector<Prin
 {
   const std::vector<Dplane> planes = planes_of(symmetries);
   if(planes.empty()) return pca_frame(mass);
-
-  const double second_tolerance = std::sin(second_plane_tolerance_degrees * CGAL_PI / 180.),
-               center_tolerance = std::cos(center_plane_tolerance_degrees * CGAL_PI / 180.);
-  const Dplane& first = planes.front();
-  std::array<Eigen::Vector3d, 3> axes;
-  axes[0] = first.normal;
-  const auto second = std::find_if(planes.begin() + 1, planes.end(), [&](const Dplane& p) {
-    return std::abs(p.normal.dot(axes[0])) <= second_tolerance;
-  });
-  const Dplane* found_second = second != planes.end() ? &*second : nullptr;
-  const Dplane second_plane = found_second ? *found_second : strongest_plane_perpendicular_to(prst, axes[0]);
-  axes[1] = (second_plane.normal - second_plane.normal.dot(axes[0]) * axes[0]).normalized();
-  axes[2] = axes[0].cross(axes[1]);
-  const auto third = std::find_if(planes.begin() + 1, planes.end(), [&](const Dplane& p) {
-    return &p != found_second && std::abs(p.normal.dot(axes[2])) >= center_tolerance;
-  });
-  const Dplane third_plane = third != planes.end() ? *third : strongest_plane_of_normal(prst, axes[2]).first;
-  // The centre: the intersection of the three planes.
-  Eigen::Matrix3d normals;
-  normals << first.normal.transpose(), second_plane.normal.transpose(), third_plane.normal.transpose();
-  const Eigen::Vector3d center =
-    normals.partialPivLu().solve(Eigen::Vector3d(first.offset, second_plane.offset, third_plane.offset));
-  return {center, oriented_axes(axes, center, mass)};
+  return greedy_frame_choice(mass, planes, prst).frame;
 }
 
 template <typename GT>

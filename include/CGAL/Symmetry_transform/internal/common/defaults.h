@@ -34,6 +34,9 @@ constexpr std::size_t max_number_of_planes = 10;
 constexpr double symmetry_threshold = 0.1;         // DESIGN.md: t = 1/10 of the strongest maximum
 constexpr double laplacian_threshold = 0.1;        // DESIGN.md: l = 1/10 of the strongest maximum
 
+// Alignment: the thesis's rule of the frame unless the data are said to be partial (a scan).
+constexpr bool partial_data = false;
+
 // Matching: a descriptor is compared with many others and stored; 32^3 keeps it at 256 KiB.
 constexpr long descriptor_grid_resolution = 32;
 

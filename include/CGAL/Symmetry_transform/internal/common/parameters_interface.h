@@ -31,6 +31,9 @@ CGAL_add_named_parameter(st_partial_symmetry_fraction_t, st_partial_symmetry_fra
 CGAL_add_named_parameter(st_smallest_part_fraction_t, st_smallest_part_fraction, smallest_part_fraction)
 // end of segmentation
 
+// Alignment (symmetry_alignment.h)
+CGAL_add_named_parameter(st_partial_data_t, st_partial_data, partial_data)
+
 // Viewpoint selection (viewpoint_selection.h)
 CGAL_add_named_parameter(st_number_of_directions_t, st_number_of_directions, number_of_directions)
 
