@@ -7,6 +7,8 @@
 
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
+#include <CGAL/Symmetry_transform/internal/detection/matchers.h>
+#include <CGAL/Symmetry_transform/internal/grid/gaussian_distance_transform.h>
 
 #include "Symmetry_transform_test_shapes.h"
 
@@ -16,6 +18,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -84,6 +88,58 @@ TEST(GaussianDistanceTransform, SurfaceMeshAndPolyhedronOfTheSameShapeGiveTheSam
   EXPECT_NEAR(a.radius(), b.radius(), 1e-12);
   EXPECT_EQ(a.side_length(), b.side_length());
   EXPECT_LT(max_abs_difference(a.values(), b.values()), 1e-12);
+}
+
+// The band as its definition states it, voxel by voxel: the centres within `cutoff` of the
+// plane of a triangle and in its bounding box grown by `cutoff`.
+std::vector<char> band_by_definition(const Grid& grid, const std::vector<CGAL::Symmetry_transform::internal::Dtriangle>& triangles,
+                                     double cutoff)
+{
+  namespace STI = CGAL::Symmetry_transform::internal;
+  std::vector<char> band(grid.values().size(), 0);
+  for(const STI::Dtriangle& t : triangles) {
+    const CGAL::Bbox_3 box = t.bbox();
+    STI::Dvector normal = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+    normal = normal / std::sqrt(normal.squared_length());
+    STI::for_each_voxel_in_box(grid, {box.xmin() - cutoff, box.ymin() - cutoff, box.zmin() - cutoff},
+                               {box.xmax() + cutoff, box.ymax() + cutoff, box.zmax() + cutoff},
+                               [&](std::size_t v, double x, double y, double z) {
+                                 const STI::Dvector d(x - t[0].x(), y - t[0].y(), z - t[0].z());
+                                 if(std::abs(d * normal) <= cutoff) band[v] = 1;
+                               });
+  }
+  return band;
+}
+
+// The band is marked by rows and by layers in parallel, and the detection hands the GEDT its
+// matcher's tree (issue 14): the band is that of the definition, and the grid and the closest
+// triangle of each voxel are those of one thread and of a tree of the GEDT's own, to the bit;
+// also far from the origin, where the rounding of the coordinates is larger.
+TEST(GaussianDistanceTransform, BandGridAndClosestTrianglesDoNotDependOnThreadsOrOnWhoseTreeIsUsed)
+{
+  namespace STI = CGAL::Symmetry_transform::internal;
+  for(const Vector_3& shift : {Vector_3(0, 0, 0), Vector_3(1e4, -3e3, 7e3)}) {
+    Surface_mesh mesh = ellipsoid<Surface_mesh>(1., 0.6, 0.35, 4).mesh;
+    for(auto v : vertices(mesh)) mesh.point(v) = mesh.point(v) + shift;
+    const std::vector<STI::Dtriangle> triangles = STI::triangles_of_mesh(mesh, CGAL::parameters::default_values());
+    const STI::Shape_frame frame = STI::frame_of_triangles(triangles);
+    std::vector<std::int32_t> closest_alone, closest_shared;
+    const STI::Grid_settings alone = STI::grid_settings(STI::grid_options(small_grid.number_of_threads(1)), frame.radius);
+    const Grid a = STI::gaussian_distance_transform_of_triangles<K>(triangles, frame, alone, &closest_alone);
+    const STI::Triangle_matcher matcher(triangles);
+    const STI::Grid_settings shared = STI::grid_settings(STI::grid_options(small_grid.number_of_threads(3)), frame.radius);
+    const Grid b = STI::gaussian_distance_transform_of_triangles<K>(triangles, matcher.tree(), frame, shared, &closest_shared);
+    EXPECT_EQ(a.values(), b.values());
+    EXPECT_EQ(closest_alone, closest_shared);
+    const std::vector<char> band = band_by_definition(a, triangles, alone.cutoff());
+    std::size_t in_band = 0, differ = 0;
+    for(std::size_t v = 0; v < band.size(); ++v) {
+      in_band += band[v];
+      differ += (band[v] != 0) != (closest_alone[v] >= 0);
+    }
+    EXPECT_GT(in_band, 1000u);
+    EXPECT_EQ(differ, 0u);
+  }
 }
 
 TEST(GaussianDistanceTransform, SumOfSquaresIsOne)

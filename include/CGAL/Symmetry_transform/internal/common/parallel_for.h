@@ -19,8 +19,10 @@ inline unsigned default_number_of_threads()
 }
 
 // Runs body(thread, begin, end) on `threads` contiguous, fixed slices of [0, count): the
-// split depends only on `count` and `threads`, so per-thread results are reproducible.
-// The first exception thrown by a body is rethrown in the caller.
+// split depends only on `count` and `threads`, so per-thread results are reproducible. The
+// calling thread runs slice 0 itself: one thread fewer to start, which matters for the many
+// short calls of ISP (a start costs tens of microseconds). The first exception thrown by a body
+// is rethrown in the caller, once every slice is done.
 template <typename Body>
 void parallel_for(std::size_t count, unsigned threads, const Body& body)
 {
@@ -30,15 +32,16 @@ void parallel_for(std::size_t count, unsigned threads, const Body& body)
     return;
   }
   std::vector<std::exception_ptr> errors(threads);
+  auto run = [&](unsigned t) {
+    try {
+      body(t, count * t / threads, count * (t + 1) / threads);
+    } catch(...) {
+      errors[t] = std::current_exception();
+    }
+  };
   std::vector<std::thread> workers;
-  for(unsigned t = 0; t < threads; ++t)
-    workers.emplace_back([&, t] {
-      try {
-        body(t, count * t / threads, count * (t + 1) / threads);
-      } catch(...) {
-        errors[t] = std::current_exception();
-      }
-    });
+  for(unsigned t = 1; t < threads; ++t) workers.emplace_back(run, t);
+  run(0u);
   for(std::thread& w : workers) w.join();
   for(const std::exception_ptr& e : errors)
     if(e) std::rethrow_exception(e);

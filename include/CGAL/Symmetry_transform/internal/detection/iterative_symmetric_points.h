@@ -107,8 +107,10 @@ struct Isp_sums
            const Eigen::Vector3d& t1, const Eigen::Vector3d& t2, double sigma, double fit_sigma)
   {
     const double d2 = (image - match.first).squaredNorm();
-    support += std::exp(-d2 / (2. * sigma * sigma));
-    const double w = std::exp(-d2 / (2. * fit_sigma * fit_sigma));
+    const double at_sigma = std::exp(-d2 / (2. * sigma * sigma));
+    support += at_sigma;
+    // Most fits weigh at sigma itself: the same weight, one exponential fewer.
+    const double w = fit_sigma == sigma ? at_sigma : std::exp(-d2 / (2. * fit_sigma * fit_sigma));
     if(w < negligible_weight) return;
     weight += w;
     narrower_weight += (w * w) * (w * w);

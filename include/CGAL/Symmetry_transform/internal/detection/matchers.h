@@ -72,6 +72,9 @@ public:
     return closest(p, none);
   }
 
+  // Its AABB tree, distance queries accelerated (the GEDT of the same triangles uses it).
+  const Triangle_tree& tree() const { return tree_; }
+
 private:
   Triangle_tree tree_;
 };

@@ -6,7 +6,7 @@
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_TRIANGLE_SURFACE_H
 
 // A triangle surface ready for the refinement of its symmetries: its GEDT, the AABB tree of its
-// triangles, and the closest triangle of each voxel of the GEDT's band (recorded with the GEDT)
+// triangles (built once, for both), and the closest triangle of each voxel of the GEDT's band (recorded with the GEDT)
 // for the walk of ISP. One is built per detection, and the segmentation uses it again for its
 // features.
 
@@ -31,8 +31,8 @@ public:
   const std::vector<Dtriangle> triangles;
   const Shape_frame frame;   // centre of mass and radius
   const Grid_settings grid;  // of the GEDT
+  const Triangle_matcher matcher; // its tree also serves the GEDT
   const Voxel_grid<GT> gedt;
-  const Triangle_matcher matcher;
   const Closest_triangle_field field;
 
   Triangle_surface(std::vector<Dtriangle> surface_triangles, const Grid_options& options)
@@ -53,9 +53,8 @@ private:
   Triangle_surface(std::vector<Dtriangle>&& surface_triangles, const Grid_options& options,
                    std::vector<std::int32_t>&& closest_triangles)
     : triangles(std::move(surface_triangles)), frame(frame_of_triangles(triangles)),
-      grid(grid_settings(options, frame.radius)),
-      gedt(gaussian_distance_transform_of_triangles<GT>(triangles, frame, grid, &closest_triangles)),
-      matcher(triangles),
+      grid(grid_settings(options, frame.radius)), matcher(triangles),
+      gedt(gaussian_distance_transform_of_triangles<GT>(triangles, matcher.tree(), frame, grid, &closest_triangles)),
       field(triangles, matcher, std::move(closest_triangles), gedt.origin(), gedt.voxel_size(), gedt.resolution())
   {}
 };
