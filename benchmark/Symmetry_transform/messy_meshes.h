@@ -6,8 +6,9 @@
 // Each variant is a triangle soup (every face with its own three corners, hence one component
 // per face, as a soup read without repair), built from the mesh's triangles:
 //   - components: the mesh plus `count` small tetrahedra scattered in its bounding box;
-//   - interior: the mesh plus a copy shrunk to half about the centroid (faces inside the shape)
-//     and `count` random triangles inside the bounding box;
+//   - interior copy: the mesh plus a copy shrunk to half about the centroid (faces inside);
+//   - random interior triangles: the mesh plus 20 or 2000 triangles whose corners are drawn in its
+//     bounding box (large faces across the inside);
 //   - slivers: each face split into `count` needles by points along its longest edge;
 //   - fine part: the faces whose centroid lies in the top 20 % of the x extent split 1-to-4
 //     `levels` times (one part tessellated 4^levels times finer than the rest).
@@ -90,7 +91,7 @@ std::vector<Triangle<Point>> with_components(std::vector<Triangle<Point>> triang
 }
 
 template <typename Point>
-std::vector<Triangle<Point>> with_interior_faces(std::vector<Triangle<Point>> triangles, std::size_t count, CGAL::Random& random)
+std::vector<Triangle<Point>> with_interior_copy(std::vector<Triangle<Point>> triangles)
 {
   const CGAL::Bbox_3 box = bbox_of(triangles);
   const Point c((box.xmin() + box.xmax()) / 2, (box.ymin() + box.ymax()) / 2, (box.zmin() + box.zmax()) / 2);
@@ -100,6 +101,15 @@ std::vector<Triangle<Point>> with_interior_faces(std::vector<Triangle<Point>> tr
     for(int k = 0; k < 3; ++k) t[k] = CGAL::midpoint(c, triangles[i][k]);
     triangles.push_back(t);
   }
+  return triangles;
+}
+
+// Large triangles across the inside: corners drawn uniformly in the bounding box.
+template <typename Point>
+std::vector<Triangle<Point>> with_random_triangles(std::vector<Triangle<Point>> triangles, std::size_t count,
+                                                   CGAL::Random& random)
+{
+  const CGAL::Bbox_3 box = bbox_of(triangles);
   for(std::size_t i = 0; i < count; ++i)
     triangles.push_back({random_point_in<Point>(box, random), random_point_in<Point>(box, random),
                          random_point_in<Point>(box, random)});
@@ -145,7 +155,7 @@ std::vector<Triangle<Point>> with_fine_part(std::vector<Triangle<Point>> triangl
   return triangles;
 }
 
-// The four messy variants of `mesh`, named, for a fixed seed.
+// The messy variants of `mesh`, named, for a fixed seed.
 template <typename Mesh>
 std::vector<std::pair<std::string, Mesh>> messy_variants(const Mesh& mesh, unsigned seed = 14)
 {
@@ -153,7 +163,9 @@ std::vector<std::pair<std::string, Mesh>> messy_variants(const Mesh& mesh, unsig
   const auto triangles = triangles_of(mesh);
   std::vector<std::pair<std::string, Mesh>> variants;
   variants.emplace_back("+2000 tetrahedra", mesh_of<Mesh>(with_components(triangles, 2000, random)));
-  variants.emplace_back("+interior copy +2000 triangles", mesh_of<Mesh>(with_interior_faces(triangles, 2000, random)));
+  variants.emplace_back("+interior copy", mesh_of<Mesh>(with_interior_copy(triangles)));
+  variants.emplace_back("+20 random interior triangles", mesh_of<Mesh>(with_random_triangles(triangles, 20, random)));
+  variants.emplace_back("+2000 random interior triangles", mesh_of<Mesh>(with_random_triangles(triangles, 2000, random)));
   variants.emplace_back("slivers x8", mesh_of<Mesh>(with_slivers(triangles, 8)));
   variants.emplace_back("fine part 4^3", mesh_of<Mesh>(with_fine_part(triangles, 3)));
   return variants;
