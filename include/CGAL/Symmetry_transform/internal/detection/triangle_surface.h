@@ -6,8 +6,8 @@
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_TRIANGLE_SURFACE_H
 
 // A triangle surface ready for the refinement of its symmetries: its GEDT, the AABB tree of its
-// triangles (built once, for both), and the closest triangle of each voxel of the GEDT's band (recorded with the GEDT)
-// for the walk of ISP. One is built per detection, and the segmentation uses it again for its
+// triangles (built once, for both), and the closest triangle of each voxel of the GEDT's band
+// (recorded with the GEDT) for the walk of ISP. One is built per detection, and the segmentation uses it again for its
 // features.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
