@@ -37,6 +37,8 @@
 #include <CGAL/Surface_mesh_approximation/approximate_triangle_mesh.h>
 #include <CGAL/mesh_segmentation.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <CGAL/Symmetry_transform/point_symmetry_transform.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
@@ -193,16 +195,17 @@ std::vector<std::pair<std::string, Algorithm>> algorithms(const Options& o)
     {"remeshing-" + k, [&o](const Mesh& m, const Planes& p, Out&) { return symmetric_remeshing(m, p, o.proxies); }},
     {"vsa-" + k, [&o](const Mesh& m, const Planes&, Out&) { return cgal_vsa(m, o.proxies); }},
     {"segmentation", [](const Mesh& m, const Planes&, Out&) {
-       Mesh copy = m; // the property map's storage
-       auto segment = copy.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
-       return std::to_string(ST::segment_by_symmetry(copy, segment)) + " segments";
+       std::vector<std::size_t> ids(num_faces(m));
+       const auto segment = boost::make_iterator_property_map(ids.begin(), get(boost::face_index, m));
+       return std::to_string(ST::segment_by_symmetry(m, segment)) + " segments";
      }},
     {"sdf", [](const Mesh& m, const Planes&, Out&) {
-       Mesh copy = m;
-       auto segment = copy.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
-       auto sdf = copy.add_property_map<Mesh::Face_index, double>("f:sdf", 0.).first;
-       CGAL::sdf_values(copy, sdf);
-       return std::to_string(CGAL::segmentation_from_sdf_values(copy, sdf, segment)) + " segments";
+       std::vector<std::size_t> ids(num_faces(m));
+       std::vector<double> values(num_faces(m));
+       const auto segment = boost::make_iterator_property_map(ids.begin(), get(boost::face_index, m));
+       const auto sdf = boost::make_iterator_property_map(values.begin(), get(boost::face_index, m));
+       CGAL::sdf_values(m, sdf);
+       return std::to_string(CGAL::segmentation_from_sdf_values(m, sdf, segment)) + " segments";
      }},
   };
 }
