@@ -49,8 +49,9 @@ Symmetry_frame<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters
 symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  const internal::Mass_distribution mass = internal::mass_of_mesh(tm, np);
+  // The detection first: the mass's copy of the triangles need not live through its peak.
   const internal::Detection<GT> detection = internal::detection_of_mesh(tm, np);
+  const internal::Mass_distribution mass = internal::mass_of_mesh(tm, np);
   return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
 }
 
@@ -85,8 +86,8 @@ Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParame
 symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  const internal::Detection<GT> detection = internal::detection_of_points(points, np); // first: see symmetry_frame()
   const internal::Mass_distribution mass = internal::mass_of_points(points, np);
-  const internal::Detection<GT> detection = internal::detection_of_points(points, np);
   return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
 }
 
@@ -187,8 +188,8 @@ symmetry_frame_of_triangle_soup(const PointRange& points, const TriangleRange& t
                                 const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  const internal::Detection<GT> detection = internal::detection_of_triangle_soup(points, triangles, np); // first
   const internal::Mass_distribution mass(internal::triangles_of_soup(points, triangles, np));
-  const internal::Detection<GT> detection = internal::detection_of_triangle_soup(points, triangles, np);
   return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
 }
 

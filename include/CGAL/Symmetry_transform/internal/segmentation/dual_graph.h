@@ -13,6 +13,7 @@
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <iterator>
 #include <numeric>
@@ -42,12 +44,30 @@ struct Dual_edge
   double angular_distance;   // eta (1 - cos alpha), alpha the angle of the normals, eta 1 if concave, 0 if convex
 };
 
+// The dual edges of one triangle: at most one per side, stored in place (a vector per face would
+// be a million small allocations on a million-face mesh).
+class Face_dual_edges
+{
+public:
+  void push_back(std::size_t e)
+  {
+    CGAL_assertion(size_ < 3); // each entry is one of the triangle's halfedges
+    edges_[size_++] = e;
+  }
+  const std::size_t* begin() const { return edges_.data(); }
+  const std::size_t* end() const { return edges_.data() + size_; }
+
+private:
+  std::array<std::size_t, 3> edges_;
+  std::uint8_t size_ = 0;
+};
+
 struct Segmentation_mesh
 {
   std::vector<std::array<Eigen::Vector3d, 3>> triangles; // every face, degenerate ones included
   std::vector<double> areas;
   std::vector<Dual_edge> edges;
-  std::vector<std::vector<std::size_t>> face_edges; // the dual edges of each face
+  std::vector<Face_dual_edges> face_edges; // the dual edges of each face
 
   std::size_t number_of_faces() const { return triangles.size(); }
 };

@@ -17,13 +17,12 @@
 #include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
 #include <CGAL/boost/graph/alpha_expansion_graphcut.h>
 
-#include <boost/graph/adjacency_list.hpp>
-
 #include <Eigen/Dense>
 
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
@@ -138,17 +137,6 @@ inline Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std
   return result;
 }
 
-struct Graph_cut_face
-{
-  std::vector<double> cost; // of each label
-  std::size_t label;
-};
-
-struct Graph_cut_link
-{
-  double weight;
-};
-
 // Labels 0/1 of the faces of a segment (`faces`; `local`: the position of a face in `faces`, or
 // -1) from their memberships (rows in the order of `faces`): the labelling that minimises
 //   sum over faces of (A_f / mean A) (-log u_f(label))
@@ -159,7 +147,6 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
                                                  const std::vector<std::size_t>& local,
                                                  const Eigen::MatrixXd& membership, double lambda)
 {
-  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, Graph_cut_face, Graph_cut_link> Graph;
   const std::size_t none = std::size_t(-1);
   double mean_area = 0.;
   for(std::size_t f : faces) mean_area += mesh.areas[f];
@@ -178,28 +165,30 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
     mean_length /= double(inner.size());
     mean_distance /= double(inner.size());
   }
-  Graph graph;
+  // Flat arrays, read through the vector interface of alpha_expansion_graphcut() as CGAL's SDF
+  // segmentation does: a boost::adjacency_list would allocate per face and per edge.
+  std::vector<std::vector<double>> costs(2, std::vector<double>(faces.size()));
+  std::vector<std::size_t> labels(faces.size());
   for(std::size_t i = 0; i < faces.size(); ++i) {
     const double scale = mean_area > 0. ? mesh.areas[faces[i]] / mean_area : 1.;
-    Graph_cut_face node;
     for(int c = 0; c < 2; ++c)
-      node.cost.push_back(scale * -std::log((std::max)(membership(Eigen::Index(i), c), least_membership)) + least_label_cost);
-    node.label = membership(Eigen::Index(i), 1) > membership(Eigen::Index(i), 0) ? 1 : 0;
-    boost::add_vertex(node, graph);
+      costs[std::size_t(c)][i] =
+        scale * -std::log((std::max)(membership(Eigen::Index(i), c), least_membership)) + least_label_cost;
+    labels[i] = membership(Eigen::Index(i), 1) > membership(Eigen::Index(i), 0) ? 1 : 0;
   }
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  std::vector<double> weights;
+  pairs.reserve(inner.size());
+  weights.reserve(inner.size());
   for(std::size_t e : inner) {
     const Dual_edge& d = mesh.edges[e];
     const double length = mean_length > 0. ? d.length / mean_length : 1.;
     const double crease = mean_distance > 0. ? 1. / (1. + d.angular_distance / mean_distance) : 1.;
-    boost::add_edge(local[d.first], local[d.second], Graph_cut_link{lambda * length * crease}, graph);
+    pairs.emplace_back(local[d.first], local[d.second]);
+    weights.push_back(lambda * length * crease);
   }
   if(lambda > 0. && !inner.empty())
-    CGAL::alpha_expansion_graphcut(graph, get(&Graph_cut_link::weight, graph), get(&Graph_cut_face::cost, graph),
-                                   get(&Graph_cut_face::label, graph),
-                                   CGAL::parameters::vertex_index_map(get(boost::vertex_index, graph))
-                                     .implementation_tag(CGAL::Alpha_expansion_MaxFlow_tag()));
-  std::vector<std::size_t> labels(faces.size());
-  for(std::size_t i = 0; i < faces.size(); ++i) labels[i] = graph[i].label;
+    CGAL::alpha_expansion_graphcut(pairs, weights, costs, labels, CGAL::Alpha_expansion_MaxFlow_tag());
   return labels;
 }
 
