@@ -11,6 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 
 #include <Eigen/Dense>
 
@@ -142,6 +143,8 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
   internal::check_memory(double(real_size) * 8. + double(complex_size) * 16., "the point symmetry transform");
   double sum_of_squares = 0.;
   for(double x : f.values()) sum_of_squares += x * x;
+  if(internal::stop_requested()) // cancelled in the GEDT of a shape: zero, as `f`
+    return Point_symmetry_transform<GeomTraits>(f, f.center());
   if(!(sum_of_squares > 0.)) throw std::invalid_argument("Symmetry_transform: the grid is zero everywhere");
 
   auto padded = internal::fftw_buffer<double>(real_size);
@@ -219,7 +222,7 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 Point_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
 point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  return point_symmetry_transform(gaussian_distance_transform(tm, np), np);
+  return internal::with_progress_scope(np, [&] { return point_symmetry_transform(gaussian_distance_transform(tm, np), np); });
 }
 
 /*!
@@ -250,7 +253,8 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
 point_symmetry_transform_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  return point_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
+  return internal::with_progress_scope(
+    np, [&] { return point_symmetry_transform(gaussian_distance_transform_of_points(points, np), np); });
 }
 
 /*!
@@ -283,7 +287,8 @@ Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, N
 point_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                           const NamedParameters& np = parameters::default_values())
 {
-  return point_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np);
+  return internal::with_progress_scope(
+    np, [&] { return point_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np); });
 }
 
 } // namespace CGAL::Symmetry_transform

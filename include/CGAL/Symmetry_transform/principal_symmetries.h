@@ -10,6 +10,8 @@
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
 #include <CGAL/Symmetry_transform/internal/detection/face_support.h>
@@ -63,10 +65,15 @@ principal_symmetries(
   const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, np);
-  const internal::Detection_settings settings = internal::detection_settings(np);
-  const internal::Triangle_surface<GT> surface(std::move(triangles), settings.grid);
-  return internal::principal_symmetries_of_surface(surface, prst, settings);
+  return internal::with_progress(np, [&] {
+    const double surface_share = internal::progress_shares::detection_surface_share(num_faces(tm));
+    internal::Progress_stage stage(0., surface_share);
+    std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, np);
+    const internal::Detection_settings settings = internal::detection_settings(np);
+    const internal::Triangle_surface<GT> surface(std::move(triangles), settings.grid);
+    stage.move_to(surface_share, 1.);
+    return internal::principal_symmetries_of_surface(surface, prst, settings);
+  }, [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 /*!
@@ -106,7 +113,9 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
 detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  return internal::detection_of_mesh(tm, np).symmetries;
+  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  return internal::with_progress(np, [&] { return internal::detection_of_mesh(tm, np).symmetries; },
+                                 [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 /*!
@@ -151,7 +160,9 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
 detect_principal_symmetries_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  return internal::detection_of_points(points, np).symmetries;
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::with_progress(np, [&] { return internal::detection_of_points(points, np).symmetries; },
+                                 [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 namespace internal {
@@ -161,12 +172,17 @@ template <typename GT, typename NamedParameters>
 typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typename GT::Plane_3& plane,
                                    const NamedParameters& np)
 {
-  const Detection_settings settings = detection_settings(np);
-  const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
-  const Isp_settings isp = isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
-  return to_plane<GT>(iterative_symmetric_points(surface_samples(surface.triangles, settings.sampling), to_dplane(plane),
-                                                 surface.matcher, isp, Isp_phase::BOTH, {}, &surface.field)
-                        .plane);
+  return with_progress(np, [&] {
+    const Detection_settings settings = detection_settings(np);
+    const double surface_share = progress_shares::detection_surface_share(triangles.size());
+    Progress_stage stage(0., surface_share);
+    const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
+    stage.move_to(surface_share, 1.);
+    const Isp_settings isp = isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
+    return to_plane<GT>(iterative_symmetric_points(surface_samples(surface.triangles, settings.sampling), to_dplane(plane),
+                                                   surface.matcher, isp, Isp_phase::BOTH, {}, &surface.field)
+                          .plane);
+  }, [&] { return plane; });
 }
 
 } // namespace internal
@@ -303,7 +319,9 @@ std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRa
 detect_principal_symmetries_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                              const NamedParameters& np = parameters::default_values())
 {
-  return internal::detection_of_triangle_soup(points, triangles, np).symmetries;
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::with_progress(np, [&] { return internal::detection_of_triangle_soup(points, triangles, np).symmetries; },
+                                 [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 /*!

@@ -11,6 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/alignment/mass_distribution.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
 
 #include <array>
@@ -50,8 +51,11 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const internal::Mass_distribution mass = internal::mass_of_mesh(tm, np);
-  const internal::Detection<GT> detection = internal::detection_of_mesh(tm, np);
-  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
+  return internal::to_symmetry_frame<GT>(internal::with_progress(np, [&] {
+    const internal::Detection<GT> detection = internal::detection_of_mesh(tm, np);
+    internal::throw_if_cancelled(); // the planes found so far would make another frame
+    return internal::frame_of_detection(mass, detection.symmetries, detection.prst, np);
+  }, [&] { return internal::pca_frame(mass); }));
 }
 
 /*!
@@ -86,8 +90,11 @@ symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = p
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   const internal::Mass_distribution mass = internal::mass_of_points(points, np);
-  const internal::Detection<GT> detection = internal::detection_of_points(points, np);
-  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
+  return internal::to_symmetry_frame<GT>(internal::with_progress(np, [&] {
+    const internal::Detection<GT> detection = internal::detection_of_points(points, np);
+    internal::throw_if_cancelled(); // the planes found so far would make another frame
+    return internal::frame_of_detection(mass, detection.symmetries, detection.prst, np);
+  }, [&] { return internal::pca_frame(mass); }));
 }
 
 /*!
@@ -188,8 +195,11 @@ symmetry_frame_of_triangle_soup(const PointRange& points, const TriangleRange& t
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   const internal::Mass_distribution mass(internal::triangles_of_soup(points, triangles, np));
-  const internal::Detection<GT> detection = internal::detection_of_triangle_soup(points, triangles, np);
-  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
+  return internal::to_symmetry_frame<GT>(internal::with_progress(np, [&] {
+    const internal::Detection<GT> detection = internal::detection_of_triangle_soup(points, triangles, np);
+    internal::throw_if_cancelled(); // the planes found so far would make another frame
+    return internal::frame_of_detection(mass, detection.symmetries, detection.prst, np);
+  }, [&] { return internal::pca_frame(mass); }));
 }
 
 /*!
