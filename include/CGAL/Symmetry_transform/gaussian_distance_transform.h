@@ -67,6 +67,7 @@ Voxel_grid<GT> cancellable_gaussian_distance_transform_of_triangles(const std::v
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
  * \cgalNamedParamsEnd
  *
  * \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the surface
@@ -106,6 +107,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
  * \cgalNamedParamsEnd
  *
  * \returns the normalised GEDT on a grid whose `center()` is the mean of the points and whose
@@ -154,6 +156,7 @@ gaussian_distance_transform_of_points(const PointRange& points,
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
  * \cgalNamedParamsEnd
  *
  * \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the triangles

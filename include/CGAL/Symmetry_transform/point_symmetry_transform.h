@@ -212,6 +212,7 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}
  * \cgalNamedParamsEnd
  *
  * \returns the Point Symmetry Transform of the GEDT of `tm`
@@ -243,6 +244,7 @@ point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = par
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}
  * \cgalNamedParamsEnd
  *
  * \returns the Point Symmetry Transform of the GEDT of `points`
@@ -276,6 +278,7 @@ point_symmetry_transform_of_points(const PointRange& points, const NamedParamete
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}
  * \cgalNamedParamsEnd
  *
  * \returns the Point Symmetry Transform of the GEDT of the soup

@@ -51,6 +51,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -103,6 +104,7 @@ principal_symmetries(
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -150,6 +152,7 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
  *   \cgalParamNormalMap{if given\, ISP fits the plane point to plane with the normal of the point nearest to each
  *                       mirror image\, whose orientation does not matter; a zero normal leaves its point out of the fit}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -210,6 +213,7 @@ typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typen
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{`plane` unchanged}
  * \cgalNamedParamsEnd
  *
  * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected
@@ -308,6 +312,7 @@ double symmetry_support(const TriangleMesh& tm,
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -347,6 +352,7 @@ detect_principal_symmetries_of_triangle_soup(const PointRange& points, const Tri
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{`plane` unchanged}
  * \cgalNamedParamsEnd
  *
  * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected

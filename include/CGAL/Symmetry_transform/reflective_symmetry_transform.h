@@ -350,6 +350,7 @@ auto reflective_symmetry_transform_of_gedt(const MakeGedt& make_gedt, const Name
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
@@ -419,6 +420,7 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
@@ -456,6 +458,7 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
@@ -493,6 +496,7 @@ reflective_symmetry_transform_of_points(const PointRange& points, const NamedPar
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \returns the Planar Reflective Symmetry Transform of the GEDT of the soup

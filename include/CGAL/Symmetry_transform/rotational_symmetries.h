@@ -81,6 +81,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{an empty vector}
  * \cgalNamedParamsEnd
  *
  * \returns the rotational symmetries, strongest first: by decreasing `symmetry` rounded to three
@@ -165,6 +166,7 @@ rotational_symmetries(
  *
  * \cgalNamedParamsBegin
  *   \cgalParamPointMap
+ *   \cgalParamCallback{an empty vector}
  * \cgalNamedParamsEnd
  *
  * \returns the rotational symmetries, strongest first.

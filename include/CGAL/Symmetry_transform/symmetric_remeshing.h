@@ -197,6 +197,7 @@ bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const
  *     \cgalParamType{a pointer to a model of `MutableFaceGraph`, e.g. `CGAL::Surface_mesh<Point_3>*`}
  *     \cgalParamDefault{no output}
  *   \cgalParamNEnd
+ *   \cgalParamCallback{`false`\, and writes no output}
  * \cgalNamedParamsEnd
  *
  * \returns `true` if the triangles form a 2-manifold oriented polygon mesh

@@ -39,6 +39,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamPartialData
  *   \cgalParamGeomTraits
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamCallback{the PCA frame\, as `pca_frame()`}
  * \cgalNamedParamsEnd
  *
  * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
@@ -78,6 +79,7 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{passed on to `detect_principal_symmetries_of_points()`: with normals\, ISP fits point to plane}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the PCA frame\, as `pca_frame_of_points()`}
  * \cgalNamedParamsEnd
  *
  * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
@@ -182,6 +184,7 @@ pca_frame_of_points(const PointRange& points, const NamedParameters& np = parame
  *   \cgalParamPartialData
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the PCA frame\, as `pca_frame_of_triangle_soup()`}
  * \cgalNamedParamsEnd
  *
  * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.

@@ -212,6 +212,7 @@ struct Segmentation_tree
  *   \cgalParamNEnd
  *   \cgalParamGeomTraits
  *   \cgalParamVerbose{whether to print a line per examined segment on `std::cerr`}
+ *   \cgalParamCallback{0\, and writes neither `segment_id_map` nor `segmentation_tree`}
  * \cgalNamedParamsEnd
  *
  * \returns the number of segments. Every face gets a segment id, and every segment is connected
