@@ -131,16 +131,18 @@ void check_detection_progress(const Mesh& mesh)
   expect_same_symmetries(with, ST::detect_principal_symmetries(mesh, grid_32));
 }
 
-TEST(ProgressCallback, DetectionProgressRisesToOneAndLeavesTheResultOnSurfaceMesh)
-{
-  check_detection_progress(bumped_ellipsoid(4));
-}
-
-TEST(ProgressCallback, DetectionProgressRisesToOneAndLeavesTheResultOnPolyhedron)
+Polyhedron as_polyhedron(const Surface_mesh& mesh)
 {
   Polyhedron poly;
-  CGAL::copy_face_graph(bumped_ellipsoid(4), poly);
-  check_detection_progress(poly);
+  CGAL::copy_face_graph(mesh, poly);
+  return poly;
+}
+
+TEST(ProgressCallback, DetectionProgressRisesToOneAndLeavesTheResultOnSurfaceMeshAndPolyhedron)
+{
+  const Surface_mesh mesh = bumped_ellipsoid(4);
+  check_detection_progress(mesh);
+  check_detection_progress(as_polyhedron(mesh));
 }
 
 TEST(ProgressCallback, DetectionOfPointsAndSoupsReportProgress)
@@ -234,16 +236,11 @@ void check_segmentation_progress(const Mesh& mesh)
   EXPECT_EQ(with, without);
 }
 
-TEST(ProgressCallback, SegmentationProgressRisesToOneAndLeavesTheResultOnSurfaceMesh)
+TEST(ProgressCallback, SegmentationProgressRisesToOneAndLeavesTheResultOnSurfaceMeshAndPolyhedron)
 {
-  check_segmentation_progress(bumped_ellipsoid(4));
-}
-
-TEST(ProgressCallback, SegmentationProgressRisesToOneAndLeavesTheResultOnPolyhedron)
-{
-  Polyhedron poly;
-  CGAL::copy_face_graph(bumped_ellipsoid(4), poly);
-  check_segmentation_progress(poly);
+  const Surface_mesh mesh = bumped_ellipsoid(4);
+  check_segmentation_progress(mesh);
+  check_segmentation_progress(as_polyhedron(mesh));
 }
 
 // ---- Cancellation ---------------------------------------------------------------------------

@@ -18,41 +18,35 @@ namespace CGAL::Symmetry_transform::internal {
 namespace progress_shares {
 
 // The GEDT of triangles: the voxels of the band marked triangle by triangle (half the time on a
-// million triangles), the AABB tree, the Gaussian of the distances in the band.
-constexpr double gedt_band = 0.5;
-constexpr double gedt_tree = 0.6;
-// The GEDT of points: the band, then the distances (a Kd-tree, then a search per voxel).
-constexpr double gedt_band_of_points = 0.2;
-// The surface of a detection (Triangle_surface): the GEDT, then the AABB tree of ISP.
-constexpr double surface_gedt = 0.8;
+// million triangles) until gedt_band, the AABB tree until gedt_tree, then the Gaussian of the
+// distances in the band. The GEDT of points: the band until gedt_band_of_points, then the
+// distances (a Kd-tree, then a search per voxel). The surface of a detection (Triangle_surface):
+// the GEDT until surface_gedt, then the AABB tree of ISP.
+constexpr double gedt_band = 0.5, gedt_tree = 0.6, gedt_band_of_points = 0.2, surface_gedt = 0.8;
 
 // A detection: the surface (GEDT, trees) or the GEDT of points, then the transform, then the
 // refinements of the candidates. The surface costs in proportion to the faces, the rest does
 // not: its share is F / (F + detection_faces_at_half_share) for F faces (or points), at least
 // min_detection_surface (the grid: 0.1 on bull.off, 12K faces; 0.67 on 1.2M faces).
-constexpr double detection_faces_at_half_share = 250000.;
-constexpr double min_detection_surface = 0.1;
+constexpr double detection_faces_at_half_share = 250000., min_detection_surface = 0.1;
 inline double detection_surface_share(std::size_t faces)
 {
   return (std::max)(min_detection_surface, double(faces) / (double(faces) + detection_faces_at_half_share));
 }
-// Of what follows the surface: the transform (500K Monte Carlo pairs), the rest refinements.
-constexpr double detection_transform = 0.25;
-// A transform computed from a mesh: the GEDT, then the transform itself (2M pairs by default).
-constexpr double transform_gedt = 0.3;
+// Of what follows the surface: the transform (500K Monte Carlo pairs), the rest refinements. A
+// transform computed from a mesh: the GEDT, then the transform itself (2M pairs by default).
+constexpr double detection_transform = 0.25, transform_gedt = 0.3;
 
-// Symmetric remeshing: the working mesh split along the planes and the mirror faces, then the
-// partition (seeding and iterations), then the extraction of the mesh from the end.
-constexpr double remeshing_preparation = 0.35;
-constexpr double remeshing_extraction = 0.97;
-// Of the partition: the seeding (which runs iterations of its own), the rest the iterations.
-constexpr double remeshing_seeding = 0.3;
+// Symmetric remeshing: the working mesh split along the planes and the mirror faces until
+// remeshing_preparation, then the partition (the seeding, which runs iterations of its own, for
+// remeshing_seeding of it, then the iterations), then the extraction of the mesh from
+// remeshing_extraction.
+constexpr double remeshing_preparation = 0.35, remeshing_extraction = 0.97, remeshing_seeding = 0.3;
 
-// Segmentation: the dual graph and the connected components, then the levels of splits.
-constexpr double segmentation_preparation = 0.05;
-// Each level of splits has this fraction of the share of the level above (the rest goes to the
-// deeper levels): deeper segments are smaller and their grids coarser.
-constexpr double segmentation_level_share = 0.5;
+// Segmentation: the dual graph and the connected components, then the levels of splits. Each
+// level has segmentation_level_share of what the level above leaves (the rest goes to the deeper
+// levels): deeper segments are smaller and their grids coarser.
+constexpr double segmentation_preparation = 0.05, segmentation_level_share = 0.5;
 
 } // namespace progress_shares
 } // namespace CGAL::Symmetry_transform::internal
