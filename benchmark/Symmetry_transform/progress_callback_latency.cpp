@@ -9,9 +9,12 @@
 // 10 %, 30 %, 50 %, 70 % and 90 % into the run (from the callback's false to the return).
 //
 //   progress_callback_latency [--mesh FILE] [--loop K] [--functions detection,remeshing,segmentation]
-//                             [--threads 2] [--repeats 2]
+//                             [--threads 2] [--repeats 2] [--single none|true]
 //
 // --loop K Loop-subdivides the mesh K times first (bunny00.off twice: 1.2M faces, as issue 14).
+// --single runs each function once, without a callback or with one that returns true, and
+// stops: for instruction counts (valgrind --tool=callgrind), which the load of a shared
+// machine does not disturb.
 
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 #include <CGAL/Symmetry_transform/symmetric_remeshing.h>
@@ -103,8 +106,14 @@ double value_at(const Run& complete, double fraction)
 }
 
 template <typename Work>
-void measure(const std::string& name, std::size_t repeats, const Work& work)
+void measure(const std::string& name, std::size_t repeats, const std::string& single, const Work& work)
 {
+  if(!single.empty()) {
+    Run run;
+    timed(run, work, single == "true");
+    std::cout << name << " once, " << (single == "true" ? "with" : "without") << " callback: " << run.wall << " s\n";
+    return;
+  }
   double cpu_without = 1e300, cpu_with = 1e300, wall_without = 1e300, gap = 0.;
   Run complete;
   for(std::size_t r = 0; r < repeats; ++r) { // alternated, the smallest CPU time of each
@@ -139,7 +148,7 @@ void measure(const std::string& name, std::size_t repeats, const Work& work)
 
 int main(int argc, char** argv)
 {
-  std::string file = benchmark_utilities::mesh_path("bunny00.off"), functions = "detection,remeshing,segmentation";
+  std::string file = benchmark_utilities::mesh_path("bunny00.off"), functions = "detection,remeshing,segmentation", single;
   int loop = 0;
   unsigned threads = 2;
   std::size_t repeats = 2;
@@ -149,6 +158,7 @@ int main(int argc, char** argv)
     else if(key == "--functions") functions = value;
     else if(key == "--threads") threads = unsigned(std::atoi(value.c_str()));
     else if(key == "--repeats") repeats = std::size_t(std::atoi(value.c_str()));
+    else if(key == "--single") single = value;
   }
   Mesh mesh;
   if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(file, mesh)) {
@@ -160,15 +170,15 @@ int main(int argc, char** argv)
   const auto np = CGAL::parameters::number_of_threads(threads).random_seed(1);
   for(const std::string& f : benchmark_utilities::split(functions)) {
     if(f == "detection")
-      measure(f, repeats, [&](const std::function<bool(double)>& cb) { ST::detect_principal_symmetries(mesh, np.callback(cb)); });
+      measure(f, repeats, single, [&](const std::function<bool(double)>& cb) { ST::detect_principal_symmetries(mesh, np.callback(cb)); });
     else if(f == "remeshing")
-      measure(f, repeats, [&](const std::function<bool(double)>& cb) {
+      measure(f, repeats, single, [&](const std::function<bool(double)>& cb) {
         std::vector<K::Point_3> anchors;
         ST::symmetric_approximate_triangle_mesh(mesh, std::vector<K::Plane_3>{K::Plane_3(1, 0, 0, 0)},
                                                 np.callback(cb).anchors(std::back_inserter(anchors)));
       });
     else if(f == "segmentation")
-      measure(f, repeats, [&](const std::function<bool(double)>& cb) {
+      measure(f, repeats, single, [&](const std::function<bool(double)>& cb) {
         auto ids = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
         ST::segment_by_symmetry(mesh, ids, np.callback(cb));
       });

@@ -72,6 +72,7 @@ Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const De
 {
   Progress_stage stage(0., progress_shares::detection_transform);
   Reflective_symmetry_transform<GT> prst = detection_transform(surface.gedt, np);
+  throw_if_cancelled(); // the transform is then zero
   stage.move_to(progress_shares::detection_transform, 1.);
   std::vector<Principal_symmetry<GT>> symmetries = principal_symmetries_of_surface(surface, prst, settings);
   return {std::move(symmetries), std::move(prst)};
@@ -129,6 +130,7 @@ detection_of_points(const PointRange& points, const NamedParameters& np)
   const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(shape, frame, grid);
   stage.move_to(gedt_share, refinements);
   Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
+  throw_if_cancelled(); // the transform is then zero
   stage.move_to(refinements, 1.);
   auto refined = [&](const auto& matcher) {
     return refine_candidates(gedt, prst, point_samples(shape, settings.sampling), matcher,
