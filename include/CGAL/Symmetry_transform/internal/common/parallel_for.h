@@ -65,6 +65,7 @@ void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned 
       lock.lock();
     }
     for(std::thread& w : workers) w.join();
+    if(errors[threads]) std::rethrow_exception(errors[threads]); // before the workers' Operation_cancelled
     for(const std::exception_ptr& e : errors)
       if(e) std::rethrow_exception(e);
   }
