@@ -73,8 +73,9 @@ public:
 
 typedef CGAL::AABB_tree<Triangle_tree_traits> Triangle_tree;
 
-// The tree's nodes split every this many nodes between calls to the progress callback: the top
-// splits sort up to all the triangles, the lower ones a few.
+// The progress is polled before each split of at least this many triangles (the top splits,
+// which partially sort up to all of them), and every tree_splits_per_poll smaller splits.
+constexpr std::ptrdiff_t tree_large_split = 4096;
 constexpr std::size_t tree_splits_per_poll = 64;
 
 // tree.build(), the same splits, with calls to the progress callback while it builds (progress.h):
@@ -90,7 +91,7 @@ inline void build_triangle_tree(Triangle_tree& tree)
   std::size_t splits = 0;
   tree.custom_build(tree.traits().compute_bbox_object(),
                     [&](auto first, auto beyond, const typename Triangle_tree_traits::Bounding_box& box) {
-                      if(++splits % tree_splits_per_poll == 0) poll_progress();
+                      if(beyond - first >= tree_large_split || ++splits % tree_splits_per_poll == 0) poll_progress();
                       split(first, beyond, box);
                     });
 }
