@@ -74,10 +74,11 @@ struct Recorder
   double seconds_since_cancel() const { return std::chrono::duration<double>(Clock::now() - cancel_time).count(); }
 };
 
-// The properties of the progress of a run that was not cancelled: from 0 to 1, never down.
+// The properties of the progress of a run that was not cancelled: from 0 to 1, never down. A run
+// shorter than the 20 ms between calls reports 0 and 1 only.
 void expect_complete_progress(const Recorder& r)
 {
-  ASSERT_GE(r.values.size(), 3u);
+  ASSERT_GE(r.values.size(), 2u);
   EXPECT_EQ(r.values.front(), 0.);
   EXPECT_EQ(r.values.back(), 1.);
   for(std::size_t i = 1; i < r.values.size(); ++i) {
@@ -358,8 +359,8 @@ TEST(ProgressCallback, CancelledSegmentationStopsPromptlyAndWritesNothing)
 TEST(ProgressCallback, CancelledTransformsAreZeroAndCancelledFrameIsThePcaFrame)
 {
   const Surface_mesh mesh = bumped_ellipsoid(4);
-  Recorder gedt, prst, frame;
-  gedt.cancel_at = prst.cancel_at = frame.cancel_at = 0.3;
+  Recorder gedt, prst, frame; // cancelled at the first call: these runs may take less than 20 ms
+  gedt.cancel_at = prst.cancel_at = frame.cancel_at = 0.;
   const auto zero = [](const std::vector<double>& v) {
     return std::all_of(v.begin(), v.end(), [](double x) { return x == 0.; });
   };
