@@ -85,7 +85,8 @@ gaussian_distance_transform(const TriangleMesh& tm,
 {
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
 
-  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, np), np);
+  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(
+    internal::without_progress([&] { return internal::triangles_of_mesh(tm, np); }), np);
 }
 
 /*!
@@ -173,7 +174,8 @@ gaussian_distance_transform_of_triangle_soup(const PointRange& points, const Tri
                                              const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_soup(points, triangles, np), np);
+  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(
+    internal::without_progress([&] { return internal::triangles_of_soup(points, triangles, np); }), np);
 }
 
 } // namespace CGAL::Symmetry_transform

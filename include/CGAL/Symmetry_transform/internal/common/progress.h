@@ -269,6 +269,21 @@ auto with_progress_scope(const NamedParameters& np, const Work& work) -> decltyp
   return result;
 }
 
+// f() with no progress reported nor polled on this thread: for work that a cancel must not
+// interrupt, as the reading of the triangles whose frame places a GEDT (a cancelled GEDT is a grid
+// of zeros of that geometry).
+template <typename F>
+auto without_progress(const F& f) -> decltype(f())
+{
+  struct Pause
+  {
+    Progress* saved = active_progress;
+    Pause() { active_progress = nullptr; }
+    ~Pause() { active_progress = saved; }
+  } pause;
+  return f();
+}
+
 // The state of a parallel_for() run under a Progress: items done, published by the workers.
 struct Parallel_progress
 {
