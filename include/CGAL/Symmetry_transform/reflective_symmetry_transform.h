@@ -376,6 +376,8 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   if(f.resolution() % 2 != 0)
     throw std::invalid_argument("reflective_symmetry_transform: grid_resolution must be even "
                                 "(a plane on the equator is also the plane of phi + pi)");
+  if(internal::stop_requested()) // cancelled in the GEDT of a shape: zero, as `f`
+    return Reflective_symmetry_transform<GeomTraits>(f.resolution(), f.center(), f.radius());
   if(std::none_of(f.values().begin(), f.values().end(), [](double v) { return v != 0.; }))
     throw std::invalid_argument("reflective_symmetry_transform: the grid is zero everywhere");
 
@@ -383,7 +385,6 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   Reflective_symmetry_transform<GeomTraits> result(f.resolution(), f.center(), f.radius());
   if(method != Reflective_symmetry_method::EXACT && samples == 0)
     throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
-  if(internal::stop_requested()) return result; // cancelled in the GEDT of a mesh: zero, as `f`
   internal::with_progress(np, [&] {
     internal::fill_reflective_symmetry(f, method, estimator, samples, seed, (std::max)(1u, threads), result);
     return true;
