@@ -23,6 +23,7 @@
 #include "coloured_ply.h"
 #include "command_line_options.h"
 #include "input_files.h"
+#include "progress_bar.h"
 #include "shape_extent.h"
 
 #include <cstdlib>
@@ -106,7 +107,8 @@ try {
   CGAL::Real_timer timer;
   timer.start();
   const std::vector<ST::Principal_symmetry<K>> symmetries =
-    ST::detect_principal_symmetries_of_triangle_soup(soup.points, soup.triangles, np);
+    ST::detect_principal_symmetries_of_triangle_soup(soup.points, soup.triangles,
+                                                     np.callback(examples::progress_bar("Detection"))); // on a terminal
   std::cout << std::setprecision(3) << symmetries.size() << " principal symmetries (grid " << resolution << "^3, "
             << samples << " Monte Carlo samples) in " << timer.time() << " s\n";
   write_planes(soup, symmetries, prefix, np);

@@ -34,6 +34,7 @@
 #include "coloured_ply.h"
 #include "command_line_options.h"
 #include "input_files.h"
+#include "progress_bar.h"
 
 #include <array>
 #include <cmath>
@@ -183,6 +184,7 @@ try {
                       strongest_plane_only(strongest).   // reflect each face through its strongest plane only
                       random_seed(unsigned(seed)).       // the same seed, the same mesh
                       verbose(verbose).                  // prints the steps
+                      callback(examples::progress_bar("Remeshing")). // a progress bar on a terminal
                       output_mesh(&symmetric.mesh));     // the remeshed surface
   symmetric.seconds = timer.time();
   results.push_back(measured(symmetric, mesh, planes, seed));

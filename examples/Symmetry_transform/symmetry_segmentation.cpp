@@ -22,6 +22,7 @@
 #include "coloured_ply.h"
 #include "command_line_options.h"
 #include "input_files.h"
+#include "progress_bar.h"
 
 #include <cstdlib>
 #include <functional>
@@ -97,6 +98,7 @@ try {
                       smoothing_lambda(lambda).         // weight of the boundary length in the graph cut
                       random_seed(unsigned(seed)).      // the same seed, the same segments
                       verbose(verbose).                 // prints each split
+                      callback(examples::progress_bar("Segmentation")). // a progress bar on a terminal
                       segmentation_tree(std::ref(tree))); // receives the tree of splits
   std::cout << std::setprecision(3) << count << " segments (depth <= " << depth << ", grid " << resolution << "^3) in "
             << timer.time() << " s\nSegmentation tree (each segment: its faces, area, what became of it, and the\n"

@@ -9,11 +9,43 @@
 #include <CGAL/Symmetry_transform/internal/grid/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace CGAL::Symmetry_transform {
+
+namespace internal {
+
+// The GEDT of a shape of frame `frame` filled by fill(grid, settings) under the callback of `np`:
+// zero everywhere if the user cancels.
+template <typename GT, typename NamedParameters, typename Fill>
+Voxel_grid<GT> cancellable_gaussian_distance_transform(const Shape_frame& frame, const NamedParameters& np, const Fill& fill)
+{
+  const Grid_settings settings = grid_settings(np, frame.radius);
+  Voxel_grid<GT> grid = empty_grid<GT>(frame, settings);
+  with_progress(np, [&] { fill(grid, settings); return true; }, [&] {
+    std::fill(grid.values().begin(), grid.values().end(), 0.);
+    return false;
+  });
+  return grid;
+}
+
+template <typename GT, typename NamedParameters>
+Voxel_grid<GT> cancellable_gaussian_distance_transform_of_triangles(const std::vector<Dtriangle>& triangles,
+                                                                    const NamedParameters& np)
+{
+  return cancellable_gaussian_distance_transform<GT>(frame_of_triangles(triangles), np,
+    [&](Voxel_grid<GT>& grid, const Grid_settings& settings) {
+      fill_gaussian_distance_transform_of_triangles(grid, triangles, settings);
+    });
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgSymmetryTransformGridRef
@@ -35,6 +67,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
  * \cgalNamedParamsEnd
  *
  * \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the surface
@@ -52,7 +85,8 @@ gaussian_distance_transform(const TriangleMesh& tm,
 {
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
 
-  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_mesh(tm, np), np);
+  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(
+    internal::without_progress([&] { return internal::triangles_of_mesh(tm, np); }), np);
 }
 
 /*!
@@ -74,6 +108,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
  * \cgalNamedParamsEnd
  *
  * \returns the normalised GEDT on a grid whose `center()` is the mean of the points and whose
@@ -93,8 +128,10 @@ gaussian_distance_transform_of_points(const PointRange& points,
 
   const std::vector<internal::Dpoint> samples =
     internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
-  const internal::Shape_frame frame = internal::frame_of_points(samples);
-  return internal::gaussian_distance_transform_of_points<GT>(samples, frame, internal::grid_settings(np, frame.radius));
+  return internal::cancellable_gaussian_distance_transform<GT>(internal::frame_of_points(samples), np,
+    [&](Voxel_grid<GT>& grid, const internal::Grid_settings& settings) {
+      internal::fill_gaussian_distance_transform_of_points(grid, samples, settings);
+    });
 }
 
 /*!
@@ -120,6 +157,7 @@ gaussian_distance_transform_of_points(const PointRange& points,
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
  * \cgalNamedParamsEnd
  *
  * \returns the normalised GEDT on a grid whose `center()` is the centre of mass of the triangles
@@ -136,7 +174,8 @@ gaussian_distance_transform_of_triangle_soup(const PointRange& points, const Tri
                                              const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  return internal::gaussian_distance_transform_of_triangles<GT>(internal::triangles_of_soup(points, triangles, np), np);
+  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(
+    internal::without_progress([&] { return internal::triangles_of_soup(points, triangles, np); }), np);
 }
 
 } // namespace CGAL::Symmetry_transform

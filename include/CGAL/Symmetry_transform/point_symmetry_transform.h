@@ -11,6 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 
 #include <Eigen/Dense>
 
@@ -142,6 +143,8 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
   internal::check_memory(double(real_size) * 8. + double(complex_size) * 16., "the point symmetry transform");
   double sum_of_squares = 0.;
   for(double x : f.values()) sum_of_squares += x * x;
+  if(internal::stop_requested()) // cancelled in the GEDT of a shape: zero, as `f`
+    return Point_symmetry_transform<GeomTraits>(f, f.center());
   if(!(sum_of_squares > 0.)) throw std::invalid_argument("Symmetry_transform: the grid is zero everywhere");
 
   auto padded = internal::fftw_buffer<double>(real_size);
@@ -209,6 +212,7 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}
  * \cgalNamedParamsEnd
  *
  * \returns the Point Symmetry Transform of the GEDT of `tm`
@@ -219,7 +223,7 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 Point_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
 point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  return point_symmetry_transform(gaussian_distance_transform(tm, np), np);
+  return internal::with_progress_scope(np, [&] { return point_symmetry_transform(gaussian_distance_transform(tm, np), np); });
 }
 
 /*!
@@ -240,6 +244,7 @@ point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = par
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}
  * \cgalNamedParamsEnd
  *
  * \returns the Point Symmetry Transform of the GEDT of `points`
@@ -250,7 +255,8 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
 point_symmetry_transform_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  return point_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
+  return internal::with_progress_scope(
+    np, [&] { return point_symmetry_transform(gaussian_distance_transform_of_points(points, np), np); });
 }
 
 /*!
@@ -272,6 +278,7 @@ point_symmetry_transform_of_points(const PointRange& points, const NamedParamete
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}
  * \cgalNamedParamsEnd
  *
  * \returns the Point Symmetry Transform of the GEDT of the soup
@@ -283,7 +290,8 @@ Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, N
 point_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                           const NamedParameters& np = parameters::default_values())
 {
-  return point_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np);
+  return internal::with_progress_scope(
+    np, [&] { return point_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np); });
 }
 
 } // namespace CGAL::Symmetry_transform

@@ -10,6 +10,8 @@
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
 #include <CGAL/Symmetry_transform/internal/detection/face_support.h>
@@ -49,6 +51,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -63,10 +66,15 @@ principal_symmetries(
   const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, np);
-  const internal::Detection_settings settings = internal::detection_settings(np);
-  const internal::Triangle_surface<GT> surface(std::move(triangles), settings.grid);
-  return internal::principal_symmetries_of_surface(surface, prst, settings);
+  return internal::with_progress(np, [&] {
+    const double surface_share = internal::progress_shares::detection_surface_share(num_faces(tm));
+    internal::Progress_stage stage(0., surface_share);
+    std::vector<internal::Dtriangle> triangles = internal::triangles_of_mesh(tm, np);
+    const internal::Detection_settings settings = internal::detection_settings(np);
+    const internal::Triangle_surface<GT> surface(std::move(triangles), settings.grid);
+    stage.move_to(surface_share, 1.);
+    return internal::principal_symmetries_of_surface(surface, prst, settings);
+  }, [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 /*!
@@ -96,6 +104,7 @@ principal_symmetries(
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -106,7 +115,9 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
 detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  return internal::detection_of_mesh(tm, np).symmetries;
+  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  return internal::with_progress(np, [&] { return internal::detection_of_mesh(tm, np).symmetries; },
+                                 [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 /*!
@@ -141,6 +152,7 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
  *   \cgalParamNormalMap{if given\, ISP fits the plane point to plane with the normal of the point nearest to each
  *                       mirror image\, whose orientation does not matter; a zero normal leaves its point out of the fit}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -151,7 +163,9 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
 detect_principal_symmetries_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  return internal::detection_of_points(points, np).symmetries;
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::with_progress(np, [&] { return internal::detection_of_points(points, np).symmetries; },
+                                 [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 namespace internal {
@@ -161,12 +175,17 @@ template <typename GT, typename NamedParameters>
 typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typename GT::Plane_3& plane,
                                    const NamedParameters& np)
 {
-  const Detection_settings settings = detection_settings(np);
-  const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
-  const Isp_settings isp = isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
-  return to_plane<GT>(iterative_symmetric_points(surface_samples(surface.triangles, settings.sampling), to_dplane(plane),
-                                                 surface.matcher, isp, Isp_phase::BOTH, {}, &surface.field)
-                        .plane);
+  return with_progress(np, [&] {
+    const Detection_settings settings = detection_settings(np);
+    const double surface_share = progress_shares::detection_surface_share(triangles.size());
+    Progress_stage stage(0., surface_share);
+    const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
+    stage.move_to(surface_share, 1.);
+    const Isp_settings isp = isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
+    return to_plane<GT>(iterative_symmetric_points(surface_samples(surface.triangles, settings.sampling), to_dplane(plane),
+                                                   surface.matcher, isp, Isp_phase::BOTH, {}, &surface.field)
+                          .plane);
+  }, [&] { return plane; });
 }
 
 } // namespace internal
@@ -194,6 +213,7 @@ typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typen
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{`plane` unchanged}
  * \cgalNamedParamsEnd
  *
  * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected
@@ -292,6 +312,7 @@ double symmetry_support(const TriangleMesh& tm,
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
  * \cgalNamedParamsEnd
  *
  * \returns the principal symmetries, strongest first.
@@ -303,7 +324,9 @@ std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRa
 detect_principal_symmetries_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                              const NamedParameters& np = parameters::default_values())
 {
-  return internal::detection_of_triangle_soup(points, triangles, np).symmetries;
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  return internal::with_progress(np, [&] { return internal::detection_of_triangle_soup(points, triangles, np).symmetries; },
+                                 [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
 /*!
@@ -329,6 +352,7 @@ detect_principal_symmetries_of_triangle_soup(const PointRange& points, const Tri
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{`plane` unchanged}
  * \cgalNamedParamsEnd
  *
  * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected

@@ -11,6 +11,8 @@
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 #include <CGAL/Symmetry_transform/internal/prst/exact.h>
 #include <CGAL/Symmetry_transform/internal/prst/file_format.h>
@@ -285,6 +287,47 @@ private:
   std::vector<double> values_;
 };
 
+namespace internal {
+
+// The values of `result`, the transform of `f`, by `method`.
+template <typename GeomTraits>
+void fill_reflective_symmetry(const Voxel_grid<GeomTraits>& f, Reflective_symmetry_method method,
+                              Monte_carlo_estimator estimator, std::size_t samples, unsigned seed, unsigned threads,
+                              Reflective_symmetry_transform<GeomTraits>& result)
+{
+  if(method == Reflective_symmetry_method::EXACT) {
+    exact_reflective_symmetry(f, result.bins(), threads, result.values());
+    return;
+  }
+  const Monte_carlo_reflective_symmetry<GeomTraits> monte_carlo(f, result.bins());
+  switch(estimator) {
+  case Monte_carlo_estimator::PAIR_JACOBIAN:
+    monte_carlo.run_pair_jacobian(samples, seed, threads, result.values());
+    break;
+  case Monte_carlo_estimator::BOUNDED_WEIGHT:
+    monte_carlo.run_bounded_weight(samples, seed, threads, result.values());
+    break;
+  case Monte_carlo_estimator::STRATIFIED_LINES:
+    monte_carlo.run_stratified_lines(samples, seed, threads, result.values());
+    break;
+  }
+}
+
+// The transform of the GEDT that make_gedt() returns, under the callback of `np`: the GEDT is
+// the first part of the work. A cancel there leaves a GEDT zero everywhere, whose transform is zero.
+template <typename MakeGedt, typename NamedParameters>
+auto reflective_symmetry_transform_of_gedt(const MakeGedt& make_gedt, const NamedParameters& np)
+{
+  return with_progress_scope(np, [&] {
+    Progress_stage stage(0., progress_shares::transform_gedt);
+    const auto f = make_gedt();
+    stage.move_to(progress_shares::transform_gedt, 1.);
+    return reflective_symmetry_transform(f, np);
+  });
+}
+
+} // namespace internal
+
 /*!
  * \ingroup PkgSymmetryTransformPRSTRef
  *
@@ -307,6 +350,7 @@ private:
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
@@ -332,29 +376,22 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   if(f.resolution() % 2 != 0)
     throw std::invalid_argument("reflective_symmetry_transform: grid_resolution must be even "
                                 "(a plane on the equator is also the plane of phi + pi)");
+  if(internal::stop_requested()) // cancelled in the GEDT of a shape: zero, as `f`
+    return Reflective_symmetry_transform<GeomTraits>(f.resolution(), f.center(), f.radius());
   if(std::none_of(f.values().begin(), f.values().end(), [](double v) { return v != 0.; }))
     throw std::invalid_argument("reflective_symmetry_transform: the grid is zero everywhere");
 
   const auto start = std::chrono::steady_clock::now();
   Reflective_symmetry_transform<GeomTraits> result(f.resolution(), f.center(), f.radius());
-  threads = (std::max)(1u, threads);
-  if(method == Reflective_symmetry_method::EXACT) {
-    internal::exact_reflective_symmetry(f, result.bins(), threads, result.values());
-  } else {
-    if(samples == 0) throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
-    const internal::Monte_carlo_reflective_symmetry<GeomTraits> monte_carlo(f, result.bins());
-    switch(estimator) {
-    case Monte_carlo_estimator::PAIR_JACOBIAN:
-      monte_carlo.run_pair_jacobian(samples, seed, threads, result.values());
-      break;
-    case Monte_carlo_estimator::BOUNDED_WEIGHT:
-      monte_carlo.run_bounded_weight(samples, seed, threads, result.values());
-      break;
-    case Monte_carlo_estimator::STRATIFIED_LINES:
-      monte_carlo.run_stratified_lines(samples, seed, threads, result.values());
-      break;
-    }
-  }
+  if(method != Reflective_symmetry_method::EXACT && samples == 0)
+    throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
+  internal::with_progress(np, [&] {
+    internal::fill_reflective_symmetry(f, method, estimator, samples, seed, (std::max)(1u, threads), result);
+    return true;
+  }, [&] {
+    std::fill(result.values().begin(), result.values().end(), 0.);
+    return false;
+  });
   if(verbose)
     std::cerr << "reflective_symmetry_transform: " << f.resolution() << "^3 bins, "
               << (method == Reflective_symmetry_method::EXACT ? "exact" : "Monte Carlo") << ", "
@@ -384,6 +421,7 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \returns the Planar Reflective Symmetry Transform of the GEDT of `tm`, with `grid_resolution`
@@ -395,7 +433,7 @@ template <typename TriangleMesh, typename NamedParameters = parameters::Default_
 Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
 reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  return reflective_symmetry_transform(gaussian_distance_transform(tm, np), np);
+  return internal::reflective_symmetry_transform_of_gedt([&] { return gaussian_distance_transform(tm, np); }, np);
 }
 
 /*!
@@ -421,6 +459,7 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \returns the Planar Reflective Symmetry Transform of the GEDT of `points`, centred on their mean
@@ -431,7 +470,7 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
 reflective_symmetry_transform_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  return reflective_symmetry_transform(gaussian_distance_transform_of_points(points, np), np);
+  return internal::reflective_symmetry_transform_of_gedt([&] { return gaussian_distance_transform_of_points(points, np); }, np);
 }
 
 /*!
@@ -458,6 +497,7 @@ reflective_symmetry_transform_of_points(const PointRange& points, const NamedPar
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
+ *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \returns the Planar Reflective Symmetry Transform of the GEDT of the soup
@@ -469,7 +509,8 @@ Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRan
 reflective_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                                const NamedParameters& np = parameters::default_values())
 {
-  return reflective_symmetry_transform(gaussian_distance_transform_of_triangle_soup(points, triangles, np), np);
+  return internal::reflective_symmetry_transform_of_gedt(
+    [&] { return gaussian_distance_transform_of_triangle_soup(points, triangles, np); }, np);
 }
 
 } // namespace CGAL::Symmetry_transform

@@ -7,6 +7,8 @@
 
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/Rotational_symmetry.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/rotation/rotations_of_shape.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 
@@ -79,6 +81,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamThreads{the number of threads}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{an empty vector}
  * \cgalNamedParamsEnd
  *
  * \returns the rotational symmetries, strongest first: by decreasing `symmetry` rounded to three
@@ -94,8 +97,13 @@ detect_rotational_symmetries(const TriangleMesh& tm, const NamedParameters& np =
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const int max_order = internal::max_order(np); // checked before the work
-  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
-  return internal::rotations_of_surface(surface, max_order, {}, np);
+  return internal::with_progress(np, [&] {
+    const double surface_share = internal::progress_shares::detection_surface_share(num_faces(tm));
+    internal::Progress_stage stage(0., surface_share);
+    const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
+    stage.move_to(surface_share, 1.);
+    return internal::rotations_of_surface(surface, max_order, {}, np);
+  }, [] { return std::vector<Rotational_symmetry<GT>>(); });
 }
 
 /*!
@@ -130,10 +138,14 @@ rotational_symmetries(
   const int max_order = internal::max_order(np);
   std::vector<internal::Dplane> dplanes;
   for(const Principal_symmetry<GT>& p : planes) dplanes.push_back(internal::to_dplane(p.plane));
-  const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
-  return internal::rotations_of_surface(
-    surface, max_order, internal::plane_pair_candidates(dplanes, max_order, internal::to_eigen(internal::to_dpoint(surface.gedt.center()))),
-    np);
+  return internal::with_progress(np, [&] {
+    const double surface_share = internal::progress_shares::detection_surface_share(num_faces(tm));
+    internal::Progress_stage stage(0., surface_share);
+    const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
+    stage.move_to(surface_share, 1.);
+    const Eigen::Vector3d center = internal::to_eigen(internal::to_dpoint(surface.gedt.center()));
+    return internal::rotations_of_surface(surface, max_order, internal::plane_pair_candidates(dplanes, max_order, center), np);
+  }, [] { return std::vector<Rotational_symmetry<GT>>(); });
 }
 
 /*!
@@ -154,6 +166,7 @@ rotational_symmetries(
  *
  * \cgalNamedParamsBegin
  *   \cgalParamPointMap
+ *   \cgalParamCallback{an empty vector}
  * \cgalNamedParamsEnd
  *
  * \returns the rotational symmetries, strongest first.
@@ -164,7 +177,10 @@ template <typename PointRange, typename NamedParameters = parameters::Default_na
 std::vector<Rotational_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
 detect_rotational_symmetries_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  return internal::rotations_of_points(points, internal::max_order(np), np);
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  const int max_order = internal::max_order(np);
+  return internal::with_progress(np, [&] { return internal::rotations_of_points(points, max_order, np); },
+                                 [] { return std::vector<Rotational_symmetry<GT>>(); });
 }
 
 /*!

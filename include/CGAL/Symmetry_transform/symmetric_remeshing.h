@@ -7,6 +7,8 @@
 
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/mesh_extraction.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/mirrors.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/outputs.h>
@@ -19,9 +21,56 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 namespace CGAL::Symmetry_transform {
+
+namespace internal {
+
+// symmetric_approximate_triangle_mesh(): the outputs are written once all is computed, so that a
+// cancelled run writes none.
+template <typename GT, typename TriangleMesh, typename PlaneRange, typename NamedParameters>
+bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const NamedParameters& np)
+{
+  using parameters::is_default_parameter;
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+
+  Progress_stage stage(0., progress_shares::remeshing_preparation);
+  const Remeshing_settings settings = remeshing_settings(planes, np);
+  const Remeshing_mesh mesh = make_working_mesh(tm, settings.planes, np);
+  if(settings.verbose)
+    std::cerr << "Symmetric VSA: " << mesh.number_of_input_faces << " faces, " << mesh.number_of_faces() << " after splitting along "
+              << settings.planes.size() << " plane(s) (" << seconds() << " s)\n";
+  const std::vector<std::size_t> mirror = mirror_faces(mesh, settings.planes, settings.strongest_plane_only, settings.threads);
+  if(settings.verbose && !settings.planes.empty())
+    std::cerr << "  " << std::count_if(mirror.begin(), mirror.end(), [](std::size_t g) { return g != Remeshing_mesh::none; })
+              << " face mirrors (" << seconds() << " s)\n";
+
+  stage.move_to(progress_shares::remeshing_preparation, progress_shares::remeshing_extraction);
+  Symmetric_partition partition(mesh, settings, mirror);
+  generate_proxies(partition);
+  if(settings.verbose) std::cerr << "  partition: " << partition.proxies().size() << " proxies (" << seconds() << " s)\n";
+
+  const bool wants_mesh = !is_default_parameter<NamedParameters, internal_np::anchors_t>::value ||
+                          !is_default_parameter<NamedParameters, internal_np::triangles_t>::value ||
+                          !is_default_parameter<NamedParameters, internal_np::st_output_mesh_t>::value;
+  stage.move_to(progress_shares::remeshing_extraction, 1.);
+  std::optional<Remeshing_output> out;
+  if(wants_mesh) out = extract_mesh(partition, meshing_settings(np));
+  if(wants_mesh && settings.verbose)
+    std::cerr << "  meshing: " << out->anchors.size() << " anchors (" << out->matched_anchors << " mirror-matched), "
+              << out->triangles.size() << " triangles (" << seconds() << " s)\n";
+  throw_if_cancelled();
+  write_face_outputs(tm, partition, np);
+  write_proxies<GT>(partition, np);
+  if(!wants_mesh) return false;
+  write_mesh_outputs<GT>(*out, np);
+  return Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(out->triangles);
+}
+
+} // namespace internal
 
 /*!
  * \ingroup PkgSymmetryTransformRemeshingRef
@@ -148,6 +197,7 @@ namespace CGAL::Symmetry_transform {
  *     \cgalParamType{a pointer to a model of `MutableFaceGraph`, e.g. `CGAL::Surface_mesh<Point_3>*`}
  *     \cgalParamDefault{no output}
  *   \cgalParamNEnd
+ *   \cgalParamCallback{`false`\, and writes no output}
  * \cgalNamedParamsEnd
  *
  * \returns `true` if the triangles form a 2-manifold oriented polygon mesh
@@ -162,38 +212,9 @@ template <typename TriangleMesh, typename PlaneRange, typename NamedParameters =
 bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRange& planes,
                                          const NamedParameters& np = parameters::default_values())
 {
-  using parameters::is_default_parameter;
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  const auto start = std::chrono::steady_clock::now();
-  auto seconds = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-
-  const internal::Remeshing_settings settings = internal::remeshing_settings(planes, np);
-  const internal::Remeshing_mesh mesh = internal::make_working_mesh(tm, settings.planes, np);
-  if(settings.verbose)
-    std::cerr << "Symmetric VSA: " << mesh.number_of_input_faces << " faces, " << mesh.number_of_faces() << " after splitting along "
-              << settings.planes.size() << " plane(s) (" << seconds() << " s)\n";
-  const std::vector<std::size_t> mirror =
-    internal::mirror_faces(mesh, settings.planes, settings.strongest_plane_only, settings.threads);
-  if(settings.verbose && !settings.planes.empty())
-    std::cerr << "  " << std::count_if(mirror.begin(), mirror.end(), [](std::size_t g) { return g != internal::Remeshing_mesh::none; })
-              << " face mirrors (" << seconds() << " s)\n";
-
-  internal::Symmetric_partition partition(mesh, settings, mirror);
-  internal::generate_proxies(partition);
-  if(settings.verbose) std::cerr << "  partition: " << partition.proxies().size() << " proxies (" << seconds() << " s)\n";
-  internal::write_face_outputs(tm, partition, np);
-  internal::write_proxies<GT>(partition, np);
-
-  if(is_default_parameter<NamedParameters, internal_np::anchors_t>::value &&
-     is_default_parameter<NamedParameters, internal_np::triangles_t>::value &&
-     is_default_parameter<NamedParameters, internal_np::st_output_mesh_t>::value)
-    return false;
-  const internal::Remeshing_output out = internal::extract_mesh(partition, internal::meshing_settings(np));
-  if(settings.verbose)
-    std::cerr << "  meshing: " << out.anchors.size() << " anchors (" << out.matched_anchors << " mirror-matched), "
-              << out.triangles.size() << " triangles (" << seconds() << " s)\n";
-  internal::write_mesh_outputs<GT>(out, np);
-  return Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(out.triangles);
+  return internal::with_progress(np, [&] { return internal::symmetric_remeshing<GT>(tm, planes, np); },
+                                 [] { return false; });
 }
 
 } // namespace CGAL::Symmetry_transform

@@ -11,6 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/alignment/mass_distribution.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
 
 #include <array>
@@ -38,6 +39,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamPartialData
  *   \cgalParamGeomTraits
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
+ *   \cgalParamCallback{the PCA frame\, as `pca_frame()`}
  * \cgalNamedParamsEnd
  *
  * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
@@ -49,10 +51,8 @@ Symmetry_frame<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters
 symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
-  // The detection first: the mass's copy of the triangles need not live through its peak.
-  const internal::Detection<GT> detection = internal::detection_of_mesh(tm, np);
-  const internal::Mass_distribution mass = internal::mass_of_mesh(tm, np);
-  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame_under_progress(
+      np, [&] { return internal::detection_of_mesh(tm, np); }, [&] { return internal::mass_of_mesh(tm, np); }));
 }
 
 /*!
@@ -75,6 +75,7 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{passed on to `detect_principal_symmetries_of_points()`: with normals\, ISP fits point to plane}
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the PCA frame\, as `pca_frame_of_points()`}
  * \cgalNamedParamsEnd
  *
  * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
@@ -86,9 +87,9 @@ Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParame
 symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  const internal::Detection<GT> detection = internal::detection_of_points(points, np); // first: see symmetry_frame()
-  const internal::Mass_distribution mass = internal::mass_of_points(points, np);
-  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame_under_progress(
+      np, [&] { return internal::detection_of_points(points, np); },
+      [&] { return internal::mass_of_points(points, np); }));
 }
 
 /*!
@@ -176,6 +177,7 @@ pca_frame_of_points(const PointRange& points, const NamedParameters& np = parame
  *   \cgalParamPartialData
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
+ *   \cgalParamCallback{the PCA frame\, as `pca_frame_of_triangle_soup()`}
  * \cgalNamedParamsEnd
  *
  * \returns the symmetry frame: unit, right-handed axes and the centre of symmetry.
@@ -188,9 +190,9 @@ symmetry_frame_of_triangle_soup(const PointRange& points, const TriangleRange& t
                                 const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  const internal::Detection<GT> detection = internal::detection_of_triangle_soup(points, triangles, np); // first
-  const internal::Mass_distribution mass(internal::triangles_of_soup(points, triangles, np));
-  return internal::to_symmetry_frame<GT>(internal::frame_of_detection(mass, detection.symmetries, detection.prst, np));
+  return internal::to_symmetry_frame<GT>(internal::symmetry_frame_under_progress(
+      np, [&] { return internal::detection_of_triangle_soup(points, triangles, np); },
+      [&] { return internal::Mass_distribution(internal::triangles_of_soup(points, triangles, np)); }));
 }
 
 /*!

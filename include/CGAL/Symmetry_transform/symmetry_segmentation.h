@@ -8,6 +8,7 @@
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/hierarchy.h>
@@ -211,6 +212,7 @@ struct Segmentation_tree
  *   \cgalParamNEnd
  *   \cgalParamGeomTraits
  *   \cgalParamVerbose{whether to print a line per examined segment on `std::cerr`}
+ *   \cgalParamCallback{0\, and writes neither `segment_id_map` nor `segmentation_tree`}
  * \cgalNamedParamsEnd
  *
  * \returns the number of segments. Every face gets a segment id, and every segment is connected
@@ -230,10 +232,12 @@ std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_
   const auto vpm = internal::vertex_point_map(tm, np);
   const auto face_index = CGAL::get_initialized_face_index_map(tm, np);
   std::vector<Symmetry_segment<GT>> segments;
-  const std::size_t number_of_segments =
-    internal::numbers_the_faces(tm, face_index)
-      ? internal::segment_mesh<GT>(tm, vpm, face_index, segment_id_map, settings, segments)
-      : internal::segment_mesh<GT>(tm, vpm, internal::face_index_in_order(tm), segment_id_map, settings, segments);
+  const std::size_t number_of_segments = internal::with_progress(np, [&] {
+    return internal::numbers_the_faces(tm, face_index)
+             ? internal::segment_mesh<GT>(tm, vpm, face_index, segment_id_map, settings, segments)
+             : internal::segment_mesh<GT>(tm, vpm, internal::face_index_in_order(tm), segment_id_map, settings, segments);
+  }, [] { return std::size_t(0); });
+  if(number_of_segments == 0) return 0; // cancelled: nothing written
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_segmentation_tree_t>::value)
     parameters::get_parameter_reference(np, internal_np::st_segmentation_tree).segments = std::move(segments);
   return number_of_segments;

@@ -22,6 +22,7 @@
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
 #include <Eigen/Dense>
@@ -319,6 +320,19 @@ Eigen_frame frame_of_detection(const Mass_distribution& mass, const std::vector<
                                                     defaults::partial_data);
   if(!partial || symmetries.empty()) return symmetry_frame(mass, symmetries, prst);
   return frame_choice(mass, symmetries, prst, partial_data_rule).frame;
+}
+
+// The symmetry frame of a shape under the callback of `np`: detect() then mass(), in that order
+// so that the mass's copy of the triangles does not live through the detection's peak. Once
+// cancelled, the PCA frame, its mass made with no progress polled.
+template <typename NamedParameters, typename Detect, typename Mass>
+Eigen_frame symmetry_frame_under_progress(const NamedParameters& np, const Detect& detect, const Mass& mass)
+{
+  return with_progress(np, [&] {
+    const auto detection = detect();
+    throw_if_cancelled(); // the planes found so far would make another frame
+    return frame_of_detection(mass(), detection.symmetries, detection.prst, np);
+  }, [&] { return pca_frame(without_progress(mass)); });
 }
 
 } // namespace CGAL::Symmetry_transform::internal

@@ -5,9 +5,13 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H
 
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+
 #include <algorithm>
+#include <condition_variable>
 #include <cstddef>
 #include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -18,15 +22,68 @@ inline unsigned default_number_of_threads()
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
+// parallel_for() under a Progress: the workers see it (parallel_step(), stop_requested()); the
+// caller, which runs no slice, calls the callback while it waits if it is the owner (a
+// parallel_for() nested in a worker only waits), then throws Operation_cancelled if the work was
+// cancelled. The slices are those of parallel_for().
+template <typename Body>
+void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned threads, const Body& body)
+{
+  Parallel_progress loop;
+  loop.count = count;
+  if(threads == 1) {
+    Worker_progress_scope scope(&progress, &loop);
+    body(0u, std::size_t(0), count);
+  } else {
+    std::vector<std::exception_ptr> errors(threads + 1);
+    std::mutex mutex;
+    std::condition_variable finished;
+    unsigned running = threads;
+    std::vector<std::thread> workers;
+    for(unsigned t = 0; t < threads; ++t)
+      workers.emplace_back([&, t] {
+        try {
+          Worker_progress_scope scope(&progress, &loop);
+          body(t, count * t / threads, count * (t + 1) / threads);
+        } catch(...) {
+          errors[t] = std::current_exception();
+        }
+        std::lock_guard<std::mutex> lock(mutex);
+        --running;
+        finished.notify_one();
+      });
+    const auto interval = std::chrono::duration<double>(callback_interval_seconds);
+    const bool owner = progress.on_owner_thread();
+    for(std::unique_lock<std::mutex> lock(mutex); !finished.wait_for(lock, interval, [&] { return running == 0; });) {
+      if(!owner) continue;
+      lock.unlock();
+      try {
+        progress.call(double(loop.done.load(std::memory_order_relaxed)) / double(count), false);
+      } catch(...) { // the user's callback threw: the workers stop, then its exception goes on
+        if(!errors[threads]) errors[threads] = std::current_exception();
+      }
+      lock.lock();
+    }
+    for(std::thread& w : workers) w.join();
+    if(errors[threads]) std::rethrow_exception(errors[threads]); // before the workers' Operation_cancelled
+    for(const std::exception_ptr& e : errors)
+      if(e) std::rethrow_exception(e);
+  }
+  if(progress.cancelled()) throw Operation_cancelled();
+}
+
 // Runs body(thread, begin, end) on `threads` contiguous, fixed slices of [0, count): the
 // split depends only on `count` and `threads`, so per-thread results are reproducible. The
 // calling thread runs slice 0 itself: one thread fewer to start, which matters for the many
 // short calls of ISP (a start costs tens of microseconds). The first exception thrown by a body
-// is rethrown in the caller, once every slice is done.
+// is rethrown in the caller, once every slice is done. Under a callback (progress.h), bodies
+// call parallel_step() after each item, or test stop_requested(), and return when cancelled.
 template <typename Body>
 void parallel_for(std::size_t count, unsigned threads, const Body& body)
 {
   threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
+  if(active_progress != nullptr)
+    return parallel_for_with_progress(*active_progress, count, threads, body);
   if(threads == 1) {
     body(0u, std::size_t(0), count);
     return;

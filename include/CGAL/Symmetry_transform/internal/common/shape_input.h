@@ -10,6 +10,7 @@
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -60,7 +61,7 @@ std::vector<Dtriangle> triangles_of_mesh(const TriangleMesh& tm, const NamedPara
   std::vector<Dtriangle> triangles;
   std::size_t number_of_faces = 0;
   for(auto f : faces(tm)) {
-    ++number_of_faces;
+    if(++number_of_faces % sequential_items_per_report == 0) poll_progress(); // a million faces take 0.2 s
     const auto h = halfedge(f, tm);
     if(!CGAL::is_triangle(h, tm))
       throw std::invalid_argument("Symmetry_transform: the mesh has a face that is not a triangle "

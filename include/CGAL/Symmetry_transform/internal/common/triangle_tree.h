@@ -8,6 +8,7 @@
 // The AABB tree of the triangles of a shape, for the closest-point searches of the distance
 // transform and of Iterative Symmetric Points.
 
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/AABB_traits.h>
@@ -16,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
@@ -70,6 +72,29 @@ public:
 };
 
 typedef CGAL::AABB_tree<Triangle_tree_traits> Triangle_tree;
+
+// The progress is polled before each split of at least this many triangles (the top splits,
+// which partially sort up to all of them), and every tree_splits_per_poll smaller splits.
+constexpr std::ptrdiff_t tree_large_split = 4096;
+constexpr std::size_t tree_splits_per_poll = 64;
+
+// tree.build(), the same splits, with calls to the progress callback while it builds (progress.h):
+// a tree of a million triangles takes a second. The search structure of its distance queries
+// (accelerate_distance_queries()) has no such hook.
+inline void build_triangle_tree(Triangle_tree& tree)
+{
+  if(active_progress == nullptr) {
+    tree.build();
+    return;
+  }
+  const auto split = tree.traits().split_primitives_object();
+  std::size_t splits = 0;
+  tree.custom_build(tree.traits().compute_bbox_object(),
+                    [&](auto first, auto beyond, const typename Triangle_tree_traits::Bounding_box& box) {
+                      if(beyond - first >= tree_large_split || ++splits % tree_splits_per_poll == 0) poll_progress();
+                      split(first, beyond, box);
+                    });
+}
 
 } // namespace CGAL::Symmetry_transform::internal
 

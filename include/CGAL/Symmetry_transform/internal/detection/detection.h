@@ -14,6 +14,8 @@
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
 #include <CGAL/Symmetry_transform/internal/detection/candidates.h>
@@ -26,6 +28,7 @@
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
+#include <iterator>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
@@ -67,7 +70,10 @@ template <typename GT, typename NamedParameters>
 Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const Detection_settings& settings,
                                    const NamedParameters& np)
 {
+  Progress_stage stage(0., progress_shares::detection_transform);
   Reflective_symmetry_transform<GT> prst = detection_transform(surface.gedt, np);
+  throw_if_cancelled(); // the transform is then zero
+  stage.move_to(progress_shares::detection_transform, 1.);
   std::vector<Principal_symmetry<GT>> symmetries = principal_symmetries_of_surface(surface, prst, settings);
   return {std::move(symmetries), std::move(prst)};
 }
@@ -84,9 +90,12 @@ Detection<typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type> detect
                                                                                           const NamedParameters& np)
 {
   typedef typename Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  const double surface_share = progress_shares::detection_surface_share(num_faces(tm));
+  Progress_stage stage(0., surface_share);
   std::vector<Dtriangle> triangles = triangles_of_mesh(tm, np);
   const Detection_settings settings = detection_settings(np);
   const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
+  stage.move_to(surface_share, 1.);
   return detection_of_surface(surface, settings, np);
 }
 
@@ -97,7 +106,10 @@ detection_of_triangle_soup(const PointRange& points, const TriangleRange& triang
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
   const Detection_settings settings = detection_settings(np);
+  const double surface_share = progress_shares::detection_surface_share(std::size(triangles));
+  Progress_stage stage(0., surface_share);
   const Triangle_surface<GT> surface(triangles_of_soup(points, triangles, np), settings.grid);
+  stage.move_to(surface_share, 1.);
   return detection_of_surface(surface, settings, np);
 }
 
@@ -112,8 +124,14 @@ detection_of_points(const PointRange& points, const NamedParameters& np)
   const Detection_settings settings = detection_settings(np);
   const Shape_frame frame = frame_of_points(shape);
   const Grid_settings grid = grid_settings(settings.grid, frame.radius);
+  const double gedt_share = progress_shares::detection_surface_share(shape.size()),
+               refinements = gedt_share + (1. - gedt_share) * progress_shares::detection_transform;
+  Progress_stage stage(0., gedt_share);
   const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(shape, frame, grid);
+  stage.move_to(gedt_share, refinements);
   Reflective_symmetry_transform<GT> prst = detection_transform(gedt, np);
+  throw_if_cancelled(); // the transform is then zero
+  stage.move_to(refinements, 1.);
   auto refined = [&](const auto& matcher) {
     return refine_candidates(gedt, prst, point_samples(shape, settings.sampling), matcher,
                              isp_settings(grid, settings.isp_iterations, gedt), settings.candidates);

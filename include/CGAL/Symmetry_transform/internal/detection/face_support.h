@@ -54,6 +54,7 @@ void triangle_supports(std::size_t count, const Corners& corners, const Triangle
         sum += std::exp(-(image - matcher.closest(image).first).squaredNorm() / (2. * sigma * sigma));
       }
       support[f] = sum / double(points.size());
+      if(!parallel_step()) return;
     }
   });
 }

@@ -170,7 +170,7 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
   std::vector<Isp_sums> partial(threads);
   parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
     std::size_t previous = none;
-    for(std::size_t c = thread; c < chunks; c += threads) {
+    for(std::size_t c = thread; c < chunks && parallel_poll(); c += threads) {
       for(std::size_t i = c * samples_per_chunk; i < (std::min)((c + 1) * samples_per_chunk, samples.size()); ++i)
         add_sample(i, partial[thread], previous);
     }

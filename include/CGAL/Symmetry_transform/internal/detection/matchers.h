@@ -52,7 +52,7 @@ public:
 
   explicit Triangle_matcher(const std::vector<Dtriangle>& triangles) : tree_(triangles.begin(), triangles.end())
   {
-    tree_.build();
+    build_triangle_tree(tree_);
     tree_.accelerate_distance_queries();
     tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
   }

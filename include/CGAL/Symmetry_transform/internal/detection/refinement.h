@@ -22,6 +22,7 @@
 #include <array>
 #include <chrono>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
@@ -112,7 +113,12 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
   for(const auto& bin : candidates) {
     if(result.size() == options.max_planes) break;
     const auto start = std::chrono::steady_clock::now();
-    const Candidate_outcome outcome = refine_candidate(prst, bin, samples, matcher, settings, walk_matcher, accepted);
+    const std::optional<Candidate_outcome> refined = unless_cancelled([&] {
+      report_progress(std::size_t(&bin - candidates.data()), candidates.size());
+      return refine_candidate(prst, bin, samples, matcher, settings, walk_matcher, accepted);
+    });
+    if(!refined) break; // cancelled: the planes accepted so far (progress.h)
+    const Candidate_outcome& outcome = *refined;
     if(options.verbose)
       print_candidate(prst, bin, outcome, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if(outcome.verdict != nullptr) continue;

@@ -11,6 +11,8 @@
 // features.
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
 #include <CGAL/Symmetry_transform/internal/grid/gaussian_distance_transform.h>
@@ -53,8 +55,15 @@ private:
   Triangle_surface(std::vector<Dtriangle>&& surface_triangles, const Grid_options& options,
                    std::vector<std::int32_t>&& closest_triangles)
     : triangles(std::move(surface_triangles)), frame(frame_of_triangles(triangles)),
-      grid(grid_settings(options, frame.radius)), matcher(triangles),
-      gedt(gaussian_distance_transform_of_triangles<GT>(triangles, matcher.tree(), frame, grid, &closest_triangles)),
+      grid(grid_settings(options, frame.radius)),
+      matcher([&] { // the first part of the progress of a surface (progress.h)
+        Progress_stage stage(0., progress_shares::surface_tree);
+        return Triangle_matcher(triangles);
+      }()),
+      gedt([&] {
+        Progress_stage stage(progress_shares::surface_tree, 1.);
+        return gaussian_distance_transform_of_triangles<GT>(triangles, matcher.tree(), frame, grid, &closest_triangles);
+      }()),
       field(triangles, matcher, std::move(closest_triangles), gedt.origin(), gedt.voxel_size(), gedt.resolution())
   {}
 };

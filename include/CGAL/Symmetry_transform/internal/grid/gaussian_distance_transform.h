@@ -9,6 +9,7 @@
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
 
@@ -164,6 +165,7 @@ void fill_gaussian_of_band(Voxel_grid<GT>& grid, const std::vector<char>& in_ban
                      o[2] + (double(v / (n * n)) + 0.5) * h);
       const double d2 = squared_distance(p, v);
       f[v] = d2 <= cutoff2 ? std::exp(-d2 / (2. * sigma * sigma)) : 0.;
+      if(!parallel_step()) return;
     }
   });
   double sum_of_squares = 0.;
@@ -180,7 +182,9 @@ void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid, const s
                                                    const Triangle_tree& tree, const Grid_settings& settings,
                                                    std::vector<std::int32_t>* closest_triangles = nullptr)
 {
+  Progress_stage stage(0., progress_shares::gedt_band);
   const std::vector<char> in_band = band_of_triangles(grid, triangles, settings.cutoff(), settings.threads);
+  stage.move_to(progress_shares::gedt_band, 1.);
   if(closest_triangles != nullptr) closest_triangles->assign(grid.values().size(), -1);
   fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t v) {
     const auto closest = tree.closest_point_and_primitive(p);
@@ -195,10 +199,12 @@ void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid,
                                                    const Grid_settings& settings,
                                                    std::vector<std::int32_t>* closest_triangles = nullptr)
 {
+  Progress_stage stage(0., progress_shares::gedt_tree);
   Triangle_tree tree(triangles.begin(), triangles.end());
-  tree.build();
+  build_triangle_tree(tree);
   tree.accelerate_distance_queries();
   tree.squared_distance(CGAL::ORIGIN); // builds the search structure before threads share the tree
+  stage.move_to(progress_shares::gedt_tree, 1.);
   fill_gaussian_distance_transform_of_triangles(grid, triangles, tree, settings, closest_triangles);
 }
 
@@ -239,7 +245,12 @@ void fill_gaussian_distance_transform_of_points(Voxel_grid<GT>& grid, const std:
                                                 const Grid_settings& settings)
 {
   std::vector<char> in_band(grid.values().size(), 0);
-  for(const Dpoint& p : points) mark_band_of_point(grid, p, settings.cutoff(), in_band);
+  Progress_stage stage(0., progress_shares::gedt_band_of_points);
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    sequential_step(i, points.size());
+    mark_band_of_point(grid, points[i], settings.cutoff(), in_band);
+  }
+  stage.move_to(progress_shares::gedt_band_of_points, 1.);
   const Nearest_point nearest(points);
   fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t) { return nearest(p).squared_distance; });
 }

@@ -54,7 +54,7 @@ public:
       auto column = fftw_buffer<double>(std::size_t(P));
       auto spectrum = fftw_buffer<fftw_complex>(std::size_t(P / 2 + 1));
       auto sum = fftw_buffer<fftw_complex>(std::size_t(P / 2 + 1));
-      for(std::size_t direction = begin; direction < end; ++direction) {
+      for(std::size_t direction = begin; direction < end && parallel_step(1); ++direction) {
         const std::size_t i = direction / n_, j = direction % n_;
         sum_squared_spectra(i, j, forward, column.get(), spectrum.get(), sum.get());
         fftw_execute_dft_c2r(backward.get(), sum.get(), column.get());

@@ -136,11 +136,14 @@ public:
   void run_stratified_lines(std::size_t samples, unsigned seed, unsigned threads, std::vector<double>& values) const
   {
     const std::size_t n = bins_.n;
+    poll_progress(); // the preparations take a tenth of a second each at 64^3
     const Strata strata = strata_of_voxels((std::max<std::size_t>)(1, samples / (n * n)));
+    poll_progress();
     const Voxel_grid<GT> sharp = sharpened_for_trilinear_interpolation(f_);
+    poll_progress();
     const Sparse_trilinear_interpolation<GT> interpolate(sharp);
     parallel_for(n * n, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-      for(std::size_t direction = begin; direction < end; ++direction)
+      for(std::size_t direction = begin; direction < end && parallel_step(); ++direction)
         stratified_line(direction, strata, interpolate, seed, values.data() + direction * n);
     });
   }
@@ -157,7 +160,7 @@ private:
     std::vector<std::vector<double>> votes(threads);
     parallel_for(chunks, threads, [&](unsigned t, std::size_t begin, std::size_t end) {
       votes[t].assign(values.size(), 0.);
-      for(std::size_t c = begin; c < end; ++c) {
+      for(std::size_t c = begin; c < end && parallel_step(1); ++c) { // a chunk takes milliseconds
         Rng rng(stream_seed(seed, c));
         vote(rng, (std::min)(monte_carlo_chunk, samples - c * monte_carlo_chunk), votes[t]);
       }

@@ -11,6 +11,7 @@
 // mirror positions (anchor_positions.h), then the holes left by removed folds filled
 // (hole_filling.h).
 
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/anchor_positions.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/anchors_and_chords.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/hole_filling.h>
@@ -36,14 +37,19 @@ inline Remeshing_output extract_mesh(const Symmetric_partition& partition, const
   const Remeshing_mesh& mesh = partition.mesh();
   const std::vector<Dplane>& planes = partition.settings().planes;
   const Nearest_vertex nearest_vertex(mesh, planes);
+  report_progress(0.2); // the steps take tenths of a second on a million faces (progress.h)
   const Patch_boundaries boundaries(partition);
   Anchor_set anchors(mesh.points.size());
+  report_progress(0.3);
   const std::vector<std::size_t> cycles = Boundary_anchors(boundaries, planes, anchors).find(settings, nearest_vertex);
+  report_progress(0.5);
   Remeshing_output out;
   out.triangles = Patch_triangulation(boundaries, anchors).triangles(cycles);
   out.anchor_vertices = anchors.vertices;
+  report_progress(0.7);
   out.anchors = anchor_positions(partition, out.anchor_vertices, settings.optimize_anchor_location);
   out.matched_anchors = snap_to_mirror_positions(boundaries, planes, out.anchor_vertices, out.anchors);
+  report_progress(0.8);
   Hole_filling(mesh, nearest_vertex, out.anchor_vertices, out.anchors, out.triangles).run();
   return out;
 }

@@ -41,7 +41,7 @@ inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std:
   const Nearest_point nearest(m.centroid);
   std::vector<double> distance(nf * k, 0.);
   parallel_for(nf, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-    for(std::size_t f = begin; f < end; ++f)
+    for(std::size_t f = begin; f < end && parallel_step(); ++f)
       for(std::size_t j = 0; j < k; ++j) {
         const auto [g, d2] = nearest(planes[j].reflect(m.centroid[f]));
         const double d = std::sqrt(d2);

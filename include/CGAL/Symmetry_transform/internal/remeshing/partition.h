@@ -28,6 +28,7 @@
 // The seeding is in seeding.h, the mirror-consistent boundaries in mirror_boundaries.h, the
 // whole sequence in proxy_generation.h.
 
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/settings.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
 
@@ -420,7 +421,8 @@ private:
 
   void flood()
   {
-    while(!queue_.empty()) {
+    for(std::size_t popped = 0; !queue_.empty(); ++popped) {
+      if(popped % sequential_items_per_report == 0) poll_progress();
       const Candidate c = queue_.top();
       queue_.pop();
       if(label_[c.face] == none && can_join(c.face, c.label)) assign(c.face, c.label);

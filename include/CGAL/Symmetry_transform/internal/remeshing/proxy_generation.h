@@ -9,6 +9,8 @@
 // iterations of flooding and fitting with proxy teleportation (partition.h), then the patch
 // boundaries of the two sides of each plane put in step (mirror_boundaries.h).
 
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/mirror_boundaries.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/partition.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/seeding.h>
@@ -23,11 +25,14 @@ namespace CGAL::Symmetry_transform::internal {
 inline void generate_proxies(Symmetric_partition& partition)
 {
   const Remeshing_settings& settings = partition.settings();
+  Progress_stage stage(0., progress_shares::remeshing_seeding);
   seed_proxies(partition);
+  stage.move_to(progress_shares::remeshing_seeding, 1.);
   if(settings.verbose)
     std::cerr << "  seeding: " << partition.proxies().size() << " proxies, error " << partition.total_error() << "\n";
   const std::size_t relaxations = (std::max<std::size_t>)(1, settings.number_of_relaxations);
   for(std::size_t i = 0; i < settings.number_of_iterations; ++i) {
+    report_progress(i, settings.number_of_iterations);
     if(i > 0 && i % relaxations == 0) partition.teleport();
     partition.iterate();
   }

@@ -12,6 +12,7 @@
 // converts from and to the user's mesh and kernel.
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -165,8 +166,13 @@ struct Remeshing_mesh
     }
     diagonal = (high - low).norm();
     const double on_plane = on_plane_tolerance * diagonal;
-    for(const Dplane& plane : planes) split_along(plane, on_plane);
+    for(const Dplane& plane : planes) {
+      poll_progress(); // each step takes a tenth of a second on a million faces (progress.h)
+      split_along(plane, on_plane);
+    }
+    poll_progress();
     build();
+    poll_progress();
     vertex_planes.assign(points.size(), 0);
     for(std::size_t v = 0; v < points.size(); ++v)
       for(std::size_t j = 0; j < planes.size(); ++j)
@@ -231,12 +237,14 @@ private:
     auto key = [](std::size_t a, std::size_t b) { return (std::uint64_t(a) << 32) | std::uint64_t(b); };
     for(std::size_t h = 0; h < nh; ++h) keyed[h] = {key(source(h), target(h)), h};
     std::sort(keyed.begin(), keyed.end());
+    poll_progress();
     auto range = [&](std::uint64_t k) {
       return std::equal_range(keyed.begin(), keyed.end(), std::make_pair(k, std::size_t(0)),
                               [](const auto& x, const auto& y) { return x.first < y.first; });
     };
     opposite.assign(nh, none);
     for(std::size_t h = 0; h < nh; ++h) {
+      if(h % sequential_items_per_report == 0) poll_progress();
       const auto same = range(key(source(h), target(h))), reverse = range(key(target(h), source(h)));
       if(same.second - same.first == 1 && reverse.second - reverse.first == 1) opposite[h] = reverse.first->second;
     }
@@ -280,12 +288,14 @@ Remeshing_mesh make_working_mesh(const TriangleMesh& tm, const std::vector<Dplan
   const auto face_index = CGAL::get_initialized_face_index_map(tm, np);
   check_index_map(vertices(tm), vertex_index, num_vertices(tm), "vertex");
   check_index_map(faces(tm), face_index, num_faces(tm), "face");
+  poll_progress();
   Remeshing_mesh m;
   std::vector<std::size_t> number(num_vertices(tm), Remeshing_mesh::none);
   for(auto v : vertices(tm)) {
     number[get(vertex_index, v)] = m.points.size();
     m.points.push_back(to_eigen(to_dpoint(get(vpm, v))));
   }
+  poll_progress();
   auto number_of = [&](auto v) { return number[get(vertex_index, v)]; };
   for(auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
@@ -293,6 +303,7 @@ Remeshing_mesh make_working_mesh(const TriangleMesh& tm, const std::vector<Dplan
     m.origin.push_back(get(face_index, f));
   }
   m.number_of_input_faces = m.faces.size();
+  poll_progress();
   m.split_along_planes(planes);
   return m;
 }

@@ -119,7 +119,7 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
   std::vector<Axis_fit_sums> partial(threads);
   parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
     std::size_t previous = none;
-    for(std::size_t c = thread; c < chunks; c += threads)
+    for(std::size_t c = thread; c < chunks && parallel_poll(); c += threads)
       for(std::size_t i = c * chunk; i < (std::min)((c + 1) * chunk, n); ++i) add_sample(i, partial[thread], previous);
   });
   Axis_fit_sums total;

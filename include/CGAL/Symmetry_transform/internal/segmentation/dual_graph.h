@@ -11,6 +11,7 @@
 // sets of faces, and the triangles of a set of faces (what a segment's detection reads).
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/assertions.h>
@@ -88,6 +89,7 @@ void add_dual_edges(const TriangleMesh& tm, const VertexPointMap& vpm, const Fac
   auto point = [&](typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) { return to_eigen(to_dpoint(get(vpm, v))); };
   for(auto f : faces(tm)) {
     const std::size_t i = std::size_t(get(face_index, f));
+    if(i % sequential_items_per_report == 0) poll_progress(); // (progress.h)
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       const auto g = face(opposite(h, tm), tm);
       if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
@@ -153,8 +155,11 @@ Segmentation_mesh segmentation_mesh(const TriangleMesh& tm, const VertexPointMap
     const Dtriangle t = triangle_of_face(halfedge(f, tm), tm, vpm);
     mesh.triangles[i] = {to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2])};
     mesh.areas[i] = area_of(mesh.triangles[i]);
+    if(i % sequential_items_per_report == 0) poll_progress(); // a million faces take half a second
   }
+  poll_progress();
   add_dual_edges(tm, vpm, face_index, mesh);
+  poll_progress();
   return mesh;
 }
 

@@ -11,6 +11,7 @@
 // graph cut on the dual graph (CGAL::alpha_expansion_graphcut) turns the memberships into labels
 // whose boundary is short and follows concave creases. Plain doubles and Eigen throughout.
 
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 
 #include <CGAL/Random.h>
@@ -71,6 +72,7 @@ inline double two_means(const Eigen::MatrixXd& x, const std::vector<double>& wei
   std::vector<int> label(std::size_t(n), -1);
   double inertia = 0.;
   for(int iteration = 0; iteration < max_clustering_iterations; ++iteration) {
+    poll_progress(); // an iteration over a million faces takes a tenth of a second (progress.h)
     bool changed = false;
     inertia = 0.;
     for(Eigen::Index i = 0; i < n; ++i) {
@@ -112,6 +114,7 @@ inline Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std
   const Eigen::Index n = x.rows();
   result.membership.resize(n, 2);
   for(int iteration = 0; iteration < max_clustering_iterations; ++iteration) {
+    poll_progress();
     for(Eigen::Index i = 0; i < n; ++i) {
       const double d0 = (x.row(i) - result.centers.row(0)).squaredNorm(),
                    d1 = (x.row(i) - result.centers.row(1)).squaredNorm();

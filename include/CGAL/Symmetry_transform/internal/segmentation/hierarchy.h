@@ -10,6 +10,8 @@
 // first, within the depth and segment-count limits; the leaves get the segment ids.
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/settings.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/split.h>
@@ -18,6 +20,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iostream>
 #include <numeric>
@@ -46,7 +49,13 @@ public:
   {
     std::vector<std::size_t> active(segments_.size());
     std::iota(active.begin(), active.end(), std::size_t(0));
-    for(std::size_t level = 0; !active.empty(); ++level) active = split_level(level, active);
+    for(std::size_t level = 0; !active.empty(); ++level) {
+      // Deeper levels examine smaller segments on coarser grids: each is given a share of the
+      // progress segmentation_level_share times that of the level above.
+      const double done = 1. - std::pow(progress_shares::segmentation_level_share, double(level));
+      Progress_stage stage(done, done + (1. - done) * (1. - progress_shares::segmentation_level_share));
+      active = split_level(level, active);
+    }
   }
 
   // Numbers the leaves, parents first, and writes the id of each face's leaf; returns their number.
@@ -123,6 +132,7 @@ private:
         for(std::size_t s : some) segments_[s].status = Status::COUNT_LIMIT;
         continue;
       }
+      report_progress(first, examined.size());
       const std::vector<Split> splits = split_segments(mesh_, faces_of_, some, settings_, total_area_, root_radius_);
       for(std::size_t k = 0; k < some.size(); ++k) apply_split(some[k], splits[k], level, next);
     }
@@ -179,9 +189,12 @@ std::size_t segment_mesh(const TriangleMesh& tm, const VertexPointMap& vpm, cons
                          SegmentIdMap segment_id_map, const Segmentation_settings& settings,
                          std::vector<Segment>& segments)
 {
+  Progress_stage stage(0., progress_shares::segmentation_preparation);
   const Segmentation_mesh mesh = segmentation_mesh(tm, vpm, face_index);
   Segmentation_hierarchy<GT, Segment> hierarchy(mesh, settings);
+  stage.move_to(progress_shares::segmentation_preparation, 1.);
   hierarchy.grow();
+  throw_if_cancelled(); // nothing is written for a cancelled segmentation
   const std::size_t number_of_segments = hierarchy.write_segment_ids(tm, face_index, segment_id_map);
   segments = std::move(hierarchy.segments());
   return number_of_segments;

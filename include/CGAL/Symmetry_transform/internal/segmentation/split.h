@@ -87,6 +87,7 @@ inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::v
         }
         features(Eigen::Index(i), Eigen::Index(j)) = sum / double(points.size());
       }
+      if(!parallel_step()) return;
     }
   });
   return features;
@@ -133,6 +134,7 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
   const auto np = detection_parameters(settings, fraction, resolution, threads);
   const Triangle_surface<Dkernel> surface(triangles_of_faces(mesh, faces), np);
   split.planes = detection_of_surface(surface, np).symmetries;
+  throw_if_cancelled(); // the detection keeps what it has; the segmentation stops
   split.detection_seconds = since_start();
 
   // Half the detection's Gaussian width: supports closer to 0 or 1 (a face is mirrored or it is
@@ -170,7 +172,7 @@ inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
   const unsigned inner = (std::max)(1u, settings.threads / workers);
   // Round robin over the segments, sorted by decreasing size: the work is shared evenly.
   parallel_for(workers, workers, [&](unsigned worker, std::size_t, std::size_t) {
-    for(std::size_t k = worker; k < examined.size(); k += workers)
+    for(std::size_t k = worker; k < examined.size() && !stop_requested(); k += workers)
     {
       double area = 0.;
       for(std::size_t f : faces_of[examined[k]]) area += mesh.areas[f];
