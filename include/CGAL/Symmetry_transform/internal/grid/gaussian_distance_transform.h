@@ -127,7 +127,11 @@ std::vector<char> band_of_triangles(const Voxel_grid<GT>& grid, const std::vecto
   std::vector<char> in_band(grid.values().size(), 0);
   const std::size_t layers = grid.resolution();
   parallel_for(layers, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-    for(const Dtriangle& t : triangles) mark_band_of_triangle(grid, t, cutoff, in_band, long(begin), long(end) - 1);
+    for(std::size_t i = 0; i < triangles.size(); ++i) {
+      // Under a callback, a cancel is seen within a few thousand triangles (a million take a second).
+      if(i % sequential_items_per_report == 0 && !parallel_poll()) return;
+      mark_band_of_triangle(grid, triangles[i], cutoff, in_band, long(begin), long(end) - 1);
+    }
   });
   return in_band;
 }
