@@ -57,8 +57,6 @@ struct Split
   double detection_seconds = 0., feature_seconds = 0.; // of which the detection, the features
 };
 
-// The points of a face at which its supports are evaluated: its centroid and three interior
-// points, as symmetry_support() does.
 // Features: the support of each plane on each face (rows: the faces of `faces`), L_ij in the
 // thesis, "the average value in the GEDT of a point of face i reflected by plane j", at the
 // face_support_points() of the face. The GEDT is evaluated exactly, from the distance to the nearest
