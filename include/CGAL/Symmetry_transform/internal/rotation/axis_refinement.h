@@ -21,8 +21,10 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -71,18 +73,37 @@ inline Rotated_sample rotated_sample(const Eigen::Vector3d& x, const Daxis& axis
   return r;
 }
 
-// A thread for every 2500 samples at least: starting a thread costs as much as matching a few
-// hundred samples, and far more on a busy machine.
-constexpr std::size_t min_samples_per_thread = 2500;
+// A thread for every 2500 samples at least of the walk: starting a thread costs as much as
+// matching a few hundred samples with the Closest_triangle_field, and far more on a busy
+// machine. Exact searches cost 10 to 30 times more (the exact end of the refinement, 2500
+// samples, runs on two threads).
+template <typename Matcher>
+constexpr std::size_t min_samples_per_thread()
+{
+  return std::is_same<Matcher, Closest_triangle_field>::value ? 2500 : 250;
+}
+
+// Adds `amount` to an atomic sum; returns the new sum.
+inline double atomic_add(std::atomic<double>& sum, double amount)
+{
+  double old = sum.load(std::memory_order_relaxed);
+  while(!sum.compare_exchange_weak(old, old + amount, std::memory_order_relaxed)) {}
+  return old + amount;
+}
 
 // The sums of the fit with weights of width `width` sigma. Each sample is rotated by one of
 // `angles`, in turn by runs of 64 consecutive samples (close to each other along the Hilbert
 // curve, so that the match of one starts the search of the next); `hints` holds one match per
-// sample.
+// sample. A fit whose sum of weights cannot exceed `reject_below` is given up as soon as the
+// weight its samples lost (1 - w each, as w <= 1) shows it: its weight is then -infinity, the
+// rest of the sums incomplete. Gauss-Newton rejects such steps all the same, and the long steps it
+// rejects are the costly ones: their samples land far from the surface, whose exact searches cost
+// 3 to 5 times more (blade.off).
 template <typename Matcher>
 Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const Daxis& axis,
                             const std::vector<double>& angles, const Matcher& matcher, const Isp_settings& settings,
-                            double width, std::vector<typename Matcher::Hint>& hints)
+                            double width, std::vector<typename Matcher::Hint>& hints,
+                            double reject_below = -std::numeric_limits<double>::infinity())
 {
   constexpr std::size_t chunk = 64;
   const double sigma = width * settings.sigma;
@@ -115,15 +136,24 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
   // As ISP: fixed round-robin chunks per thread, so that the sums are reproducible.
   const std::size_t chunks = (n + chunk - 1) / chunk;
   const unsigned threads =
-    unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), n / min_samples_per_thread)));
+    unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), n / min_samples_per_thread<Matcher>())));
   std::vector<Axis_fit_sums> partial(threads);
+  const double max_lost = double(n) * (1. + 1e-9) - reject_below; // the margin covers rounding
+  std::atomic<double> lost{0.};
+  std::atomic<bool> hopeless{false};
   parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
     std::size_t previous = none;
-    for(std::size_t c = thread; c < chunks && parallel_poll(); c += threads)
-      for(std::size_t i = c * chunk; i < (std::min)((c + 1) * chunk, n); ++i) add_sample(i, partial[thread], previous);
+    for(std::size_t c = thread; c < chunks && !hopeless.load(std::memory_order_relaxed) && parallel_poll(); c += threads) {
+      const std::size_t end = (std::min)((c + 1) * chunk, n);
+      const double before = partial[thread].weight;
+      for(std::size_t i = c * chunk; i < end; ++i) add_sample(i, partial[thread], previous);
+      if(max_lost < double(n) && atomic_add(lost, double(end - c * chunk) - (partial[thread].weight - before)) > max_lost)
+        hopeless = true;
+    }
   });
   Axis_fit_sums total;
   for(const Axis_fit_sums& s : partial) total += s;
+  if(hopeless) total.weight = -std::numeric_limits<double>::infinity();
   return total;
 }
 
@@ -165,7 +195,9 @@ typedef std::function<bool(const Axis_refinement&)> Axis_polish_if;
 // plus radii: the quadratic convergence on an exact symmetry), a relative gain below 1e-4 (the
 // top of an approximate one, where the axis would creep along a flat ridge by a fraction of a
 // degree per step), `max_steps` steps, or when `abandon` says so. Returns the sums of the final
-// axis.
+// axis; `hints` are its matches: a rejected step's are dropped, for the next search to start near
+// its answer (exact searches from a rejected step's matches, several sigma off, cost 5 times
+// more on blade.off).
 template <typename Matcher>
 Axis_fit_sums gauss_newton(const std::vector<Eigen::Vector3d>& samples, const std::vector<double>& angles,
                            const Matcher& matcher, const Isp_settings& settings, const Eigen::Vector3d& center,
@@ -173,10 +205,12 @@ Axis_fit_sums gauss_newton(const std::vector<Eigen::Vector3d>& samples, const st
                            Axis_refinement& result, unsigned max_steps, const Axis_abandon& abandon)
 {
   double factor = 1.;
+  std::vector<typename Matcher::Hint> trial_hints;
   for(unsigned step = 0; step < max_steps; ++step) {
     Daxis trial = result.axis;
     if(!axis_step(sums, trial, center, settings.radius, factor)) break;
-    const Axis_fit_sums s = axis_fit_sums(samples, trial, angles, matcher, settings, width, hints);
+    trial_hints = hints;
+    const Axis_fit_sums s = axis_fit_sums(samples, trial, angles, matcher, settings, width, trial_hints, sums.weight);
     ++result.iterations;
     if(!(s.weight > sums.weight)) {
       if(factor < 1.) break;
@@ -187,6 +221,7 @@ Axis_fit_sums gauss_newton(const std::vector<Eigen::Vector3d>& samples, const st
     const bool flat = s.weight < sums.weight * (1. + 1e-4);
     result.axis = trial;
     sums = s;
+    hints.swap(trial_hints);
     factor = 1.;
     if(abandon && abandon(result.axis)) {
       result.abandoned = true;

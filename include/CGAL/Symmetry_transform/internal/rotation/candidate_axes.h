@@ -16,6 +16,7 @@
 // - the lines where two planes of symmetry meet at an angle pi / k (a rotation by 2 pi / k is the
 //   product of the reflections through them), when the planes are known.
 
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis.h>
 #include <CGAL/Symmetry_transform/internal/rotation/normal_density.h>
 #include <CGAL/Symmetry_transform/symmetry_alignment.h>
@@ -66,15 +67,17 @@ struct Direction_sphere
 // The local maxima of the correlation of the normals' density with its rotations by 2 pi / k
 // about the searched directions, `maxima_per_order` per order, as axes through `center`.
 inline std::vector<Axis_candidate> normal_density_candidates(const Normal_density& density, int max_order,
-                                                             const Eigen::Vector3d& center)
+                                                             const Eigen::Vector3d& center, unsigned threads)
 {
   static const Direction_sphere sphere(searched_directions);
   const std::size_t n = sphere.directions.size();
   std::vector<Axis_candidate> result;
   std::vector<double> score(n);
   for(int k = 2; k <= max_order; ++k) {
-    for(std::size_t i = 0; i < n; ++i)
-      score[i] = density.correlation(rotation_about(Eigen::Vector3d::Zero(), sphere.directions[i], 2. * CGAL_PI / k).linear);
+    parallel_for(n, threads, [&](unsigned, std::size_t begin, std::size_t end) {
+      for(std::size_t i = begin; i < end && parallel_step(); ++i)
+        score[i] = density.correlation(rotation_about(Eigen::Vector3d::Zero(), sphere.directions[i], 2. * CGAL_PI / k).linear);
+    });
     std::vector<Axis_candidate> maxima;
     for(std::size_t i = 0; i < n; ++i)
       if(std::all_of(sphere.neighbours[i].begin(), sphere.neighbours[i].end(), [&](std::size_t j) {

@@ -11,6 +11,7 @@
 
 #include <CGAL/Symmetry_transform/Rotational_symmetry.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis_refinement.h>
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
@@ -114,10 +115,36 @@ struct Rotation_search
 };
 
 
+// A candidate aligned by pattern searches, on the coarse GEDT then on the sharp overlap of the
+// GEDT (its width sigma / 2).
+struct Aligned_axis
+{
+  Daxis axis;
+  double coarse = 0.; // overlap on the coarse GEDT
+  double sharp = 0.;  // at sigma / 2
+  bool done = false;
+};
+
+// The candidates coarse_axes() is likely to align, in order: those above min_coarse_overlap,
+// each not next to an earlier one of them, up to max_aligned_candidates (it aligns these and,
+// where one it skips as seen would have hidden a later one, that one too).
+inline std::vector<std::size_t> likely_aligned(const std::vector<Axis_candidate>& candidates,
+                                               const Eigen::Vector3d& center, double radius)
+{
+  std::vector<std::size_t> result;
+  for(std::size_t i = 0; i < candidates.size() && result.size() < max_aligned_candidates; ++i) {
+    if(candidates[i].score < min_coarse_overlap) break;
+    if(std::none_of(result.begin(), result.end(),
+                    [&](std::size_t j) { return same_axis(candidates[i].axis, candidates[j].axis, center, radius); }))
+      result.push_back(i);
+  }
+  return result;
+}
+
 // The candidates placed (their best axis point on the coarse GEDT), strongest first; those above
-// min_coarse_overlap aligned by pattern searches, on the coarse GEDT then on the sharp overlap
-// of the GEDT (its width sigma / 2), and kept if the sharp overlap reaches min_sharp_overlap:
-// the axes to refine, duplicates left out, in decreasing sharp overlap.
+// min_coarse_overlap aligned (Aligned_axis), and kept if the sharp overlap reaches
+// min_sharp_overlap: the axes to refine, duplicates left out, in decreasing sharp overlap. The
+// placements, and the alignments of the candidates likely to be aligned, run in parallel.
 template <typename GT, typename M, typename W>
 std::vector<Axis_candidate> coarse_axes(const Rotation_search<GT, M, W>& s, std::vector<Axis_candidate> candidates)
 {
@@ -126,27 +153,44 @@ std::vector<Axis_candidate> coarse_axes(const Rotation_search<GT, M, W>& s, std:
   const Gedt_overlap<GT> placing(s.coarse_gedt, spread_subset(s.samples, axis_point_samples), s.coarse_sigma, center, radius);
   const Gedt_overlap<GT> aligning(s.coarse_gedt, spread_subset(s.samples, alignment_samples), s.coarse_sigma, center, radius);
   const Gedt_overlap<GT> sharp(s.gedt, spread_subset(s.samples, alignment_samples), s.settings.sigma, center, radius, 4);
-  for(Axis_candidate& c : candidates)
-    c.axis = best_axis_point(placing, c.axis.point, radius, c.axis.direction, refinement_angles(c.order), c.score);
+  parallel_for(candidates.size(), s.settings.threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end && parallel_step(1); ++i) {
+      Axis_candidate& c = candidates[i];
+      c.axis = best_axis_point(placing, c.axis.point, radius, c.axis.direction, refinement_angles(c.order), c.score);
+    }
+  });
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Axis_candidate& a, const Axis_candidate& b) { return a.score > b.score; });
+  std::vector<Aligned_axis> aligned(candidates.size());
+  auto align = [&](std::size_t i) {
+    Aligned_axis& a = aligned[i];
+    const std::vector<double> angles = refinement_angles(candidates[i].order);
+    a.axis = pattern_search(aligning, candidates[i].axis, angles, coarse_pattern_angle_step, a.coarse);
+    a.axis = pattern_search(sharp, a.axis, angles, sharp_pattern_angle_step, a.sharp);
+    a.done = true;
+  };
+  const std::vector<std::size_t> likely = likely_aligned(candidates, center, radius);
+  parallel_for(likely.size(), s.settings.threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end && parallel_step(1); ++i) align(likely[i]);
+  });
   std::vector<Axis_candidate> result;
   std::vector<Daxis> tried; // the placed axes aligned so far: a candidate next to one is not aligned again
   auto seen = [&](const Daxis& axis) {
     return std::any_of(result.begin(), result.end(), [&](const Axis_candidate& r) { return same_axis(axis, r.axis, center, radius); });
   };
-  for(Axis_candidate c : candidates) {
+  for(std::size_t i = 0; i < candidates.size(); ++i) {
+    Axis_candidate c = candidates[i];
     if(c.score < min_coarse_overlap || result.size() == max_refined_axes || tried.size() == max_aligned_candidates) break;
     if(seen(c.axis) || std::any_of(tried.begin(), tried.end(), [&](const Daxis& t) { return same_axis(c.axis, t, center, radius); }))
       continue;
     tried.push_back(c.axis);
-    double coarse = 0.;
-    c.axis = pattern_search(aligning, c.axis, refinement_angles(c.order), coarse_pattern_angle_step, coarse);
-    c.axis = pattern_search(sharp, c.axis, refinement_angles(c.order), sharp_pattern_angle_step, c.score);
+    if(!aligned[i].done) align(i);
+    c.axis = aligned[i].axis;
+    c.score = aligned[i].sharp;
     const bool kept = c.score >= min_sharp_overlap && !seen(c.axis);
     if(s.verbose)
       std::cerr << "  candidate axis (" << c.axis.direction.transpose() << ") order " << c.order << ": overlap "
-                << coarse << ", sharp " << c.score << (kept ? "" : c.score < min_sharp_overlap ? ", dropped" : ", seen") << "\n";
+                << aligned[i].coarse << ", sharp " << c.score << (kept ? "" : c.score < min_sharp_overlap ? ", dropped" : ", seen") << "\n";
     if(kept) result.push_back(c);
   }
   std::stable_sort(result.begin(), result.end(), [](const Axis_candidate& a, const Axis_candidate& b) { return a.score > b.score; });
@@ -460,7 +504,7 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
   std::vector<Axis_candidate> candidates = inertia_candidates(s.mass, s.max_order);
   const Normal_density density(spread_subset(s.normals, normal_density_samples),
                                spread_subset(s.normals, normal_density_probes));
-  const std::vector<Axis_candidate> searched = normal_density_candidates(density, s.max_order, center);
+  const std::vector<Axis_candidate> searched = normal_density_candidates(density, s.max_order, center, s.settings.threads);
   candidates.insert(candidates.end(), searched.begin(), searched.end());
   candidates.insert(candidates.end(), extra.begin(), extra.end());
   if(s.verbose) std::cerr << "  " << candidates.size() << " candidates (" << seconds() << " s)\n";

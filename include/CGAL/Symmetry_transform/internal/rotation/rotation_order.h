@@ -10,6 +10,7 @@
 // compared with the best of them. Continuous when the three irrational angles hold; else the
 // largest k that holds (a k-fold symmetry also holds at the divisors of k).
 
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis_refinement.h>
 
 #include <algorithm>
@@ -92,22 +93,35 @@ template <typename Matcher>
 Rotation_order rotation_order(const std::vector<Eigen::Vector3d>& samples, const Daxis& axis, int max_order,
                               const Matcher& matcher, const Isp_settings& settings, double width)
 {
+  // The rotations by 2 pi j / k, then by the continuity angles, their supports measured in parallel.
+  std::vector<std::pair<int, int>> fractions;
+  std::vector<double> angles;
+  for(int k = 2; k <= max_order; ++k)
+    for(int j = 1; 2 * j <= k; ++j)
+      if(std::gcd(j, k) == 1) {
+        fractions.emplace_back(j, k);
+        angles.push_back(2. * CGAL_PI * double(j) / double(k));
+      }
+  const std::array<double, 3> continuity = continuity_angles();
+  angles.insert(angles.end(), continuity.begin(), continuity.end());
+  std::vector<double> supports(angles.size());
+  parallel_for(angles.size(), settings.threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    Isp_settings one_thread = settings;
+    one_thread.threads = 1;
+    for(std::size_t i = begin; i < end && parallel_step(1); ++i)
+      supports[i] = rotation_support(samples, axis, angles[i], matcher, one_thread, width);
+  });
   Rotation_order result;
   result.supports.assign(std::size_t(max_order) + 1, {});
-  for(int k = 2; k <= max_order; ++k) {
-    result.supports[std::size_t(k)].assign(std::size_t(k / 2) + 1, 0.);
-    for(int j = 1; 2 * j <= k; ++j) {
-      if(std::gcd(j, k) != 1) continue;
-      const double s = rotation_support(samples, axis, 2. * CGAL_PI * double(j) / double(k), matcher, settings, width);
-      result.supports[std::size_t(k)][std::size_t(j)] = s;
-      if(4 * j >= k) result.best = (std::max)(result.best, s);
-      if(j == 1 && s > result.support(1, result.best_order)) result.best_order = k;
-    }
+  for(int k = 2; k <= max_order; ++k) result.supports[std::size_t(k)].assign(std::size_t(k / 2) + 1, 0.);
+  for(std::size_t i = 0; i < fractions.size(); ++i) {
+    const auto [j, k] = fractions[i];
+    result.supports[std::size_t(k)][std::size_t(j)] = supports[i];
+    if(4 * j >= k) result.best = (std::max)(result.best, supports[i]);
+    if(j == 1 && supports[i] > result.support(1, result.best_order)) result.best_order = k;
   }
-  const std::array<double, 3> angles = continuity_angles();
-  for(std::size_t i = 0; i < angles.size(); ++i)
-    result.best = (std::max)(result.best, result.continuity_supports[i] =
-                                            rotation_support(samples, axis, angles[i], matcher, settings, width));
+  for(std::size_t i = 0; i < continuity.size(); ++i)
+    result.best = (std::max)(result.best, result.continuity_supports[i] = supports[fractions.size() + i]);
   if(!(result.best > 0.)) return result;
   const double holds = rotation_hold_ratio * result.best;
   if(std::all_of(result.continuity_supports.begin(), result.continuity_supports.end(), [&](double s) { return s >= holds; })) {

@@ -62,7 +62,8 @@ std::vector<Rotational_symmetry<GT>> rotations_of_surface(const Triangle_surface
                                                           const std::vector<Axis_candidate>& extra, const NamedParameters& np)
 {
   const auto coarse_np = np.grid_resolution(int(coarse_resolution(np)));
-  const Voxel_grid<GT> coarse = gaussian_distance_transform_of_triangles<GT>(surface.triangles, coarse_np);
+  const Voxel_grid<GT> coarse = gaussian_distance_transform_of_triangles<GT>(
+    surface.triangles, surface.matcher.tree(), surface.frame, grid_settings(coarse_np, surface.frame.radius));
   const std::vector<Eigen::Vector3d> samples = surface_samples(surface.triangles, np);
   const std::vector<Eigen::Vector3d> normals = normals_at(samples, surface.field);
   const Mass_distribution mass(surface.triangles);
