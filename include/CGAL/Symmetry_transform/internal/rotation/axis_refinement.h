@@ -73,15 +73,19 @@ inline Rotated_sample rotated_sample(const Eigen::Vector3d& x, const Daxis& axis
   return r;
 }
 
-// A thread for every 2500 samples at least of the walk: starting a thread costs as much as
-// matching a few hundred samples with the Closest_triangle_field, and far more on a busy
-// machine. Exact searches cost 10 to 30 times more (the exact end of the refinement, 2500
-// samples, runs on two threads).
+// A thread for every 2500 samples at least: starting a thread costs as much as matching a few
+// hundred samples with the Closest_triangle_field or the Kd-tree of a point set, and far more on a
+// busy machine. Exact searches in the AABB tree of a mesh cost up to 20 times more: a thread for
+// every 250 (the exact end of the refinement, 2500 samples, gets up to ten).
 template <typename Matcher>
 constexpr std::size_t min_samples_per_thread()
 {
-  return std::is_same<Matcher, Closest_triangle_field>::value ? 2500 : 250;
+  return std::is_same<Matcher, Triangle_matcher>::value ? 250 : 2500;
 }
+
+// A trial step is given up when the weight its samples lost exceeds what it may lose and still
+// win by this fraction of the sample count: a margin far above the rounding of the sums.
+constexpr double give_up_rounding_margin = 1e-9;
 
 // Adds `amount` to an atomic sum; returns the new sum.
 inline double atomic_add(std::atomic<double>& sum, double amount)
@@ -97,7 +101,7 @@ inline double atomic_add(std::atomic<double>& sum, double amount)
 // sample. A fit whose sum of weights cannot exceed `reject_below` is given up as soon as the
 // weight its samples lost (1 - w each, as w <= 1) shows it: its weight is then -infinity, the
 // rest of the sums incomplete. Gauss-Newton rejects such steps all the same, and the long steps it
-// rejects are the costly ones: their samples land far from the surface, whose exact searches cost
+// rejects are the costly ones: their samples land far from the surface, where exact searches cost
 // 3 to 5 times more (blade.off).
 template <typename Matcher>
 Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const Daxis& axis,
@@ -138,7 +142,7 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
   const unsigned threads =
     unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), n / min_samples_per_thread<Matcher>())));
   std::vector<Axis_fit_sums> partial(threads);
-  const double max_lost = double(n) * (1. + 1e-9) - reject_below; // the margin covers rounding
+  const double max_lost = double(n) * (1. + give_up_rounding_margin) - reject_below;
   std::atomic<double> lost{0.};
   std::atomic<bool> hopeless{false};
   parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
@@ -147,6 +151,7 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
       const std::size_t end = (std::min)((c + 1) * chunk, n);
       const double before = partial[thread].weight;
       for(std::size_t i = c * chunk; i < end; ++i) add_sample(i, partial[thread], previous);
+      // (a step can be given up only if it must beat a positive weight: max_lost < n)
       if(max_lost < double(n) && atomic_add(lost, double(end - c * chunk) - (partial[thread].weight - before)) > max_lost)
         hopeless = true;
     }
@@ -196,7 +201,7 @@ typedef std::function<bool(const Axis_refinement&)> Axis_polish_if;
 // top of an approximate one, where the axis would creep along a flat ridge by a fraction of a
 // degree per step), `max_steps` steps, or when `abandon` says so. Returns the sums of the final
 // axis; `hints` are its matches: a rejected step's are dropped, for the next search to start near
-// its answer (exact searches from a rejected step's matches, several sigma off, cost 5 times
+// its answer (exact searches from a rejected step's matches, several sigma off, cost 3 to 5 times
 // more on blade.off).
 template <typename Matcher>
 Axis_fit_sums gauss_newton(const std::vector<Eigen::Vector3d>& samples, const std::vector<double>& angles,

@@ -126,8 +126,9 @@ struct Aligned_axis
 };
 
 // The candidates coarse_axes() is likely to align, in order: those above min_coarse_overlap,
-// each not next to an earlier one of them, up to max_aligned_candidates (it aligns these and,
-// where one it skips as seen would have hidden a later one, that one too).
+// each not next to an earlier one of them, up to max_aligned_candidates. A prediction only:
+// coarse_axes() aligns any other candidate it reaches when it reaches it; a wrong guess costs
+// time, not results.
 inline std::vector<std::size_t> likely_aligned(const std::vector<Axis_candidate>& candidates,
                                                const Eigen::Vector3d& center, double radius)
 {
