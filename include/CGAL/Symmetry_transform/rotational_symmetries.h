@@ -98,7 +98,7 @@ detect_rotational_symmetries(const TriangleMesh& tm, const NamedParameters& np =
   typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
   const int max_order = internal::max_order(np); // checked before the work
   return internal::with_progress(np, [&] {
-    const double surface_share = internal::progress_shares::detection_surface_share(num_faces(tm));
+    const double surface_share = internal::rotation_surface_share(num_faces(tm));
     internal::Progress_stage stage(0., surface_share);
     const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
     stage.move_to(surface_share, 1.);
@@ -139,7 +139,7 @@ rotational_symmetries(
   std::vector<internal::Dplane> dplanes;
   for(const Principal_symmetry<GT>& p : planes) dplanes.push_back(internal::to_dplane(p.plane));
   return internal::with_progress(np, [&] {
-    const double surface_share = internal::progress_shares::detection_surface_share(num_faces(tm));
+    const double surface_share = internal::rotation_surface_share(num_faces(tm));
     internal::Progress_stage stage(0., surface_share);
     const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
     stage.move_to(surface_share, 1.);

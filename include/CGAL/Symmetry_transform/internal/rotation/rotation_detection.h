@@ -12,6 +12,8 @@
 #include <CGAL/Symmetry_transform/Rotational_symmetry.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis_refinement.h>
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
@@ -60,6 +62,25 @@ constexpr std::size_t max_refined_axes = 16;
 // The group closure stops at this many axes: the largest finite rotation group has 31 (the
 // icosahedron's 6 five-fold, 10 three-fold and 15 two-fold axes).
 constexpr std::size_t max_group_axes = 31;
+// The shares of the search's stages in the progress it reports (as progress_shares.h for the
+// other long functions), from the stages' times (--verbose) on blade.off, pinion.off, bull.off
+// and the icosahedron: the candidates, placed and aligned (0.1 s), until
+// rotation_candidates_share; the refinements (0.03 to 0.07 s each), one equal part each, until
+// rotation_refinements_end; then the closure of the group (about 10 ms per generated axis, none
+// to 30 of them), by generated axes of its first round. The grids and samples before the search:
+// rotation_grids_share of a mesh's rotation stage (the coarse GEDT), rotation_grids_share_of_points
+// of a point set's (both GEDTs and the normals).
+constexpr double rotation_candidates_share = 0.35, rotation_refinements_end = 0.8;
+constexpr double rotation_grids_share = 0.1, rotation_grids_share_of_points = 0.4;
+// Before all this, the mesh's surface (GEDT and trees) takes 20 to 60 % of a detection of
+// rotations (the icosahedron, bull.off, pinion.off), far more than of a detection of planes:
+// its share is that of a detection of planes, at least min_rotation_surface_share.
+constexpr double min_rotation_surface_share = 0.4;
+inline double rotation_surface_share(std::size_t faces)
+{
+  return (std::max)(min_rotation_surface_share, progress_shares::detection_surface_share(faces));
+}
+
 // Two axes are the same when their directions are within 2 degrees and each passes within 2 % of
 // the radius of the other's point nearest to the centre: refined axes of one symmetry agree to
 // far less, coarse ones to about a degree.
@@ -462,9 +483,11 @@ void close_group(const Rotation_search<GT, M, W>& s, const std::vector<Eigen::Ve
     const Generated_axes generated =
       group_closure(group_generators(found, center, radius, min_generator_support), s.max_order, center, radius,
                     [&](const Daxis& a, const Daxis& b) { return same_axis(a, b, center, radius); });
-    const std::size_t before = found.size();
+    const std::size_t before = found.size(), count = generated.images.size() + generated.products.size();
+    std::size_t done = 0;
     for(const bool image : {true, false})
       for(const Axis_candidate& c : image ? generated.images : generated.products) {
+        report_progress(done++, count);
         if(found.size() == max_group_axes) break;
         if(flip_of_continuous(c.axis, found, radius)) continue;
         if(std::optional<Found_rotation<GT>> f = generated_rotation(s, c, image, order_probes, found)) found.push_back(*f);
@@ -502,6 +525,7 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
   const auto start = std::chrono::steady_clock::now();
   auto seconds = [&]() { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const Eigen::Vector3d center = s.mass.center();
+  Progress_stage stage(0., rotation_candidates_share);
   std::vector<Axis_candidate> candidates = inertia_candidates(s.mass, s.max_order);
   const Normal_density density(spread_subset(s.normals, normal_density_samples),
                                spread_subset(s.normals, normal_density_probes));
@@ -516,7 +540,10 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
   bool flip_refined = false; // about a continuous axis found: its flips are all alike, one is refined
   // An axis the exact rotations found generate is left to close_group(), which maps it there
   // (the icosahedron: 2 of its 15 coarse axes refined, the 29 others generated).
-  for(const Axis_candidate& c : axes) {
+  for(std::size_t i = 0; i < axes.size(); ++i) {
+    const Axis_candidate& c = axes[i];
+    const double share = (rotation_refinements_end - rotation_candidates_share) / double(axes.size());
+    stage.move_to(rotation_candidates_share + double(i) * share, rotation_candidates_share + double(i + 1) * share);
     const bool flip = std::any_of(found.begin(), found.end(), [&](const Found_rotation<GT>& f) {
       return f.symmetry.order == 0 && meets_at_right_angle(c.axis, f.axis, s.mass.radius(), coarse_tolerance);
     });
@@ -524,6 +551,7 @@ std::vector<Rotational_symmetry<GT>> rotational_symmetries(const Rotation_search
     flip_refined = flip_refined || flip;
     if(std::optional<Found_rotation<GT>> f = refined_rotation(s, c, order_probes, found)) found.push_back(*f);
   }
+  stage.move_to(rotation_refinements_end, 1.);
   close_group(s, order_probes, found);
   if(s.verbose) std::cerr << "  " << found.size() << " axes (" << seconds() << " s)\n";
   std::vector<Rotational_symmetry<GT>> result;

@@ -12,6 +12,7 @@
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
@@ -61,12 +62,14 @@ template <typename GT, typename NamedParameters>
 std::vector<Rotational_symmetry<GT>> rotations_of_surface(const Triangle_surface<GT>& surface, int max_order,
                                                           const std::vector<Axis_candidate>& extra, const NamedParameters& np)
 {
+  Progress_stage stage(0., rotation_grids_share);
   const auto coarse_np = np.grid_resolution(int(coarse_resolution(np)));
   const Voxel_grid<GT> coarse = gaussian_distance_transform_of_triangles<GT>(
     surface.triangles, surface.matcher.tree(), surface.frame, grid_settings(coarse_np, surface.frame.radius));
   const std::vector<Eigen::Vector3d> samples = surface_samples(surface.triangles, np);
   const std::vector<Eigen::Vector3d> normals = normals_at(samples, surface.field);
   const Mass_distribution mass(surface.triangles);
+  stage.move_to(rotation_grids_share, 1.);
   const Rotation_search<GT, Triangle_matcher, Closest_triangle_field> search{
     surface.gedt, coarse, grid_settings(coarse_np, coarse.radius()).sigma(), samples, normals, mass, surface.matcher,
     surface.field, isp_settings(np, surface.gedt), max_order,
@@ -81,6 +84,7 @@ rotations_of_points(const PointRange& points, int max_order, const NamedParamete
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits GT;
   const std::vector<Dpoint> input = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  Progress_stage stage(0., rotation_grids_share_of_points);
   const Shape_frame frame = frame_of_points(input);
   const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(input, frame, grid_settings(np, frame.radius));
   const auto coarse_np = np.grid_resolution(int(coarse_resolution(np)));
@@ -90,6 +94,7 @@ rotations_of_points(const PointRange& points, int max_order, const NamedParamete
   const std::vector<Eigen::Vector3d> samples = point_samples(input, np);
   const std::vector<Eigen::Vector3d> normals = normals_at(samples, matcher);
   const Mass_distribution mass(input);
+  stage.move_to(rotation_grids_share_of_points, 1.);
   const Rotation_search<GT, Point_normal_matcher, Point_normal_matcher> search{
     gedt, coarse, grid_settings(coarse_np, coarse.radius()).sigma(), samples, normals, mass, matcher, matcher,
     isp_settings(np, gedt), max_order,
