@@ -22,6 +22,8 @@
 #include <utility>
 #include <vector>
 
+#include "benchmark_utilities.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 
 int main(int argc, char** argv)
@@ -29,14 +31,12 @@ int main(int argc, char** argv)
   const std::vector<double> marks{0.25, 0.5, 0.75, 0.95, 1.};
   std::cout << "| mesh | wall (s) | calls | time at 0.25 | 0.5 | 0.75 | 0.95 | 1 |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for(int a = 1; a < argc; ++a) {
-    std::string path = argv[a];
-    if(path.find('/') == std::string::npos) path = std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes/" + path;
     CGAL::Surface_mesh<K::Point_3> mesh;
-    if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path, mesh)) {
-      std::cerr << "cannot read " << path << "\n";
+    if(!CGAL::IO::read_polygon_mesh(mesh_path(argv[a]), mesh) || is_empty(mesh)) {
+      std::cerr << "cannot read " << mesh_path(argv[a]) << "\n";
       return 1;
     }
-    CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+    if(!CGAL::is_triangle_mesh(mesh)) CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
     std::vector<std::pair<double, double>> calls; // (seconds since the start, value)
     const auto start = std::chrono::steady_clock::now();
     auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
