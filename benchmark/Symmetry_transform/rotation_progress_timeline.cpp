@@ -25,6 +25,7 @@
 #include "benchmark_utilities.h"
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+using benchmark_utilities::mesh_path;
 
 int main(int argc, char** argv)
 {
