@@ -14,6 +14,7 @@
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/grid/filters.h>
+#include <CGAL/Symmetry_transform/internal/prst/line_interpolation.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 
 #include <boost/random/discrete_distribution.hpp>
@@ -24,57 +25,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
-
-// Trilinear interpolation that first looks up a coarse map of the blocks of 4^3 voxels that
-// can see a non-zero sample (a block and the voxel after it along each axis): most points of
-// a line through a surface's thin band are in empty space, and the map fits in the L1 cache.
-template <typename GT>
-class Sparse_trilinear_interpolation
-{
-public:
-  explicit Sparse_trilinear_interpolation(const Voxel_grid<GT>& f)
-    : f_(f), blocks_((f.resolution() + block - 1) / block), occupied_(blocks_ * blocks_ * blocks_, 0)
-  {
-    const std::size_t n = f.resolution();
-    for(std::size_t k = 0; k < n; ++k)
-      for(std::size_t j = 0; j < n; ++j)
-        for(std::size_t i = 0; i < n; ++i) {
-          if(f(i, j, k) == 0.) continue;
-          // Sample (i,j,k) is used by interpolations from voxels i-1 and i along each axis.
-          for(std::size_t dk = 0; dk < 2 && dk <= k; ++dk)
-            for(std::size_t dj = 0; dj < 2 && dj <= j; ++dj)
-              for(std::size_t di = 0; di < 2 && di <= i; ++di)
-                occupied_[block_index(i - di, j - dj, k - dk)] = 1;
-        }
-  }
-
-  double operator()(double x, double y, double z) const
-  {
-    const double h = f_.voxel_size();
-    const auto& o = f_.origin();
-    const double u = (x - o[0]) / h - 0.5, v = (y - o[1]) / h - 0.5, w = (z - o[2]) / h - 0.5;
-    const long n = long(f_.resolution());
-    const long i = long(u + 1.) - 1, j = long(v + 1.) - 1, k = long(w + 1.) - 1; // floor for u > -1
-    if(i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < n &&
-       !occupied_[block_index(std::size_t(i), std::size_t(j), std::size_t(k))])
-      return 0.;
-    return f_.trilinear_value(x, y, z);
-  }
-
-private:
-  static constexpr std::size_t block = 4;
-  std::size_t block_index(std::size_t i, std::size_t j, std::size_t k) const
-  {
-    return ((k / block) * blocks_ + j / block) * blocks_ + i / block;
-  }
-
-  const Voxel_grid<GT>& f_;
-  std::size_t blocks_;
-  std::vector<char> occupied_;
-};
 
 // The random stream of piece `piece` of the work (a chunk of samples, a direction) from the
 // user's seed: Knuth's multiplicative hash of the seed plus a small odd multiple of the piece,
@@ -141,7 +95,7 @@ public:
     poll_progress();
     const Voxel_grid<GT> sharp = sharpened_for_trilinear_interpolation(f_);
     poll_progress();
-    const Sparse_trilinear_interpolation<GT> interpolate(sharp);
+    const Line_interpolation<GT> interpolate(sharp);
     parallel_for(n * n, threads, [&](unsigned, std::size_t begin, std::size_t end) {
       for(std::size_t direction = begin; direction < end && parallel_step(); ++direction)
         stratified_line(direction, strata, interpolate, seed, values.data() + direction * n);
@@ -244,18 +198,21 @@ private:
   // regions of space: systematic sampling spreads the points evenly on the shape.
   Strata strata_of_voxels(std::size_t per_direction) const
   {
-    Strata strata{voxels_, std::vector<double>(voxels_.size()), per_direction};
+    Strata strata{{}, std::vector<double>(voxels_.size()), per_direction};
     const std::size_t res = f_.resolution();
-    std::sort(strata.voxels.begin(), strata.voxels.end(), [res](std::size_t a, std::size_t b) {
-      return hilbert_index(a % res, a / res % res, a / (res * res)) < hilbert_index(b % res, b / res % res, b / (res * res));
-    });
+    std::vector<std::pair<std::uint64_t, std::size_t>> keyed; // each voxel's index on the curve, computed once
+    keyed.reserve(voxels_.size());
+    for(std::size_t v : voxels_) keyed.emplace_back(hilbert_index(v % res, v / res % res, v / (res * res)), v);
+    std::sort(keyed.begin(), keyed.end()); // the indices are distinct: the order of the curve
+    strata.voxels.reserve(keyed.size());
+    for(const auto& key : keyed) strata.voxels.push_back(key.second);
     double running = 0.;
     for(std::size_t v = 0; v < strata.voxels.size(); ++v) strata.cumulative[v] = running += f_.values()[strata.voxels[v]];
     return strata;
   }
 
   // The n values of the bins of direction `direction` into `line`.
-  void stratified_line(std::size_t direction, const Strata& strata, const Sparse_trilinear_interpolation<GT>& interpolate,
+  void stratified_line(std::size_t direction, const Strata& strata, const Line_interpolation<GT>& interpolate,
                        unsigned seed, double* line) const
   {
     const std::size_t n = bins_.n, res = f_.resolution();
@@ -282,11 +239,12 @@ private:
       const double reach = std::sqrt(support2 - q2);
       const long first = (std::max)(0L, long(std::ceil(((s - reach) / 2. + bins_.radius) / step - 0.5)));
       const long last = (std::min)(long(n) - 1, long(std::floor(((s + reach) / 2. + bins_.radius) / step - 0.5)));
-      for(long k = first; k <= last; ++k) {
-        const double t = 2. * (bins_.offset(std::size_t(k)) - s);
-        line[k] += interpolate(bins_.center[0] + x[0] + t * nrm[0], bins_.center[1] + x[1] + t * nrm[1],
-                               bins_.center[2] + x[2] + t * nrm[2]);
-      }
+      if(first > last) continue;
+      const double t = 2. * (bins_.offset(std::size_t(first)) - s);
+      interpolate.add_along_line({bins_.center[0] + x[0] + t * nrm[0], bins_.center[1] + x[1] + t * nrm[1],
+                                  bins_.center[2] + x[2] + t * nrm[2]},
+                                 {2. * step * nrm[0], 2. * step * nrm[1], 2. * step * nrm[2]}, last - first + 1,
+                                 line + first);
     }
     const double scale = sum_ / (double(strata.per_direction) * sum_of_squares_);
     for(std::size_t k = 0; k < n; ++k) line[k] *= scale;
