@@ -50,7 +50,8 @@ public:
     bool valid = false;
   };
 
-  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles) : tree_(triangles.begin(), triangles.end())
+  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles)
+    : pieces_(triangle_pieces(triangles)), tree_(pieces_.cbegin(), pieces_.cend())
   {
     build_triangle_tree(tree_);
     tree_.accelerate_distance_queries();
@@ -76,6 +77,7 @@ public:
   const Triangle_tree& tree() const { return tree_; }
 
 private:
+  std::vector<Triangle_piece> pieces_; // the tree's primitives
   Triangle_tree tree_;
 };
 
