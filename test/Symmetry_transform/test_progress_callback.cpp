@@ -254,17 +254,26 @@ TEST(ProgressCallback, SegmentationProgressRisesToOneAndLeavesTheResultOnSurface
 
 // ---- Cancellation ---------------------------------------------------------------------------
 
+// A cancel point is a value that a complete run reported at least this long before its end: a
+// run that repeats the work then calls back at least once at or past it before 1, whatever the
+// timing of its calls (at most one every 20 ms). A value reported just before the end (the last
+// candidate refined before the tenth plane) may be skipped by a run whose calls fall otherwise.
+constexpr double min_work_after_cancel_point = 0.1;
+
 // The progress values at which the cancellations are tried: the first call, then the values that
-// a complete run reported 30 % and 70 % of its time in (whatever the shares of the stages).
+// a complete run reported 30 % and 70 % of its time in (whatever the shares of the stages), or
+// earlier ones if those were too close to the end.
 std::vector<double> cancel_points(const Recorder& complete)
 {
   std::vector<double> points{0.};
-  const double seconds = std::chrono::duration<double>(complete.times.back() - complete.times.front()).count();
+  auto seconds_between = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  const double seconds = seconds_between(complete.times.front(), complete.times.back());
   for(double fraction : {0.3, 0.7}) {
     std::size_t i = 0;
     while(i + 2 < complete.values.size() &&
-          std::chrono::duration<double>(complete.times[i] - complete.times.front()).count() < fraction * seconds)
+          seconds_between(complete.times.front(), complete.times[i]) < fraction * seconds)
       ++i;
+    while(i > 0 && seconds_between(complete.times[i], complete.times.back()) < min_work_after_cancel_point) --i;
     points.push_back(complete.values[i]); // never the last value, 1
   }
   return points;

@@ -72,12 +72,15 @@ public:
   bool call(double fraction, bool force)
   {
     if(cancelled()) return false;
-    const auto now = std::chrono::steady_clock::now();
-    if(!force && now - last_call_ < std::chrono::duration<double>(callback_interval_seconds)) return true;
+    // Kept even between calls: the next call, often a poll of a parallel loop that repeats the
+    // last value, reports it (else the values of a loop polled more often than 50 times a second,
+    // the candidates of a detection, would never be seen).
     if(fraction >= 0.) { // monotone, whatever the stages' estimates
       const double value = std::clamp(begin_ + (std::min)(fraction, 1.) * (end_ - begin_), 0., 1.);
       reported_ = (std::max)(reported_, value);
     }
+    const auto now = std::chrono::steady_clock::now();
+    if(!force && now - last_call_ < std::chrono::duration<double>(callback_interval_seconds)) return true;
     last_call_ = now;
     bool go_on = false;
     try {
