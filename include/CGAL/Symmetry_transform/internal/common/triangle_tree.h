@@ -13,13 +13,9 @@
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-
-#include <CGAL/Bbox_3.h>
+#include <CGAL/AABB_triangle_primitive.h>
 
 #include <Eigen/Core>
-
-#include <algorithm>
-#include <cmath>
 
 #include <cstddef>
 #include <vector>
@@ -53,112 +49,19 @@ inline Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const
   return a + (vb / denominator) * ab + (vc / denominator) * ac;
 }
 
-// A triangle of a soup as the AABB tree holds it: whole, or one of the pieces of a fat one
-// (triangle_pieces()). The searches measure the distance to the whole triangle, so a piece only
-// narrows the box that the tree prunes with.
-struct Triangle_piece
-{
-  std::vector<Dtriangle>::const_iterator triangle;
-  CGAL::Bbox_3 box;
-  Dpoint reference; // a point of the triangle: the tree splits by it and may start a search there
-  CGAL::Bbox_3 bbox() const { return box; }
-};
+typedef CGAL::AABB_triangle_primitive<Dkernel, std::vector<Dtriangle>::const_iterator> Triangle_primitive;
 
-// The primitive of a Triangle_piece: its Id is the whole triangle, so that every search returns
-// the triangle of the soup, whether it was cut or not.
-class Triangle_piece_primitive
-{
-public:
-  typedef Dpoint Point;
-  typedef Triangle_piece Datum;
-  typedef std::vector<Dtriangle>::const_iterator Id;
-  typedef const Datum& Datum_reference;
-  typedef const Point& Point_reference;
-
-  Triangle_piece_primitive() = default;
-  explicit Triangle_piece_primitive(std::vector<Triangle_piece>::const_iterator piece) : piece_(piece) {}
-  Datum_reference datum() const { return *piece_; }
-  Id id() const { return piece_->triangle; }
-  Point_reference reference_point() const { return piece_->reference; }
-
-private:
-  std::vector<Triangle_piece>::const_iterator piece_;
-};
-
-// A search tests every triangle whose box holds its query, however far the triangle is. On a
-// surface, few boxes overlap: on average a point of the soup's box lies in at most 12 of them on
-// every libcgal-demo mesh (pinion.off; bull.off 0.08). Large faces across the inside of a web
-// model put a point in hundreds (2000 random triangles in bull.off's box: 259). Beyond this mean
-// overlap, the fat triangles are cut into pieces; below, the tree is that of the triangles.
-constexpr double box_overlap_left_whole = 32.;
-// A piece is fat when the smallest extent of its box exceeds this fraction of the soup's box
-// diagonal: a thin box (a small or an axis-aligned triangle) is visited only near its triangle.
-// (Finer pieces, 1/64 and 1/128, gain little more and cost memory: RESULTS.md, issue 14.)
-constexpr double fat_triangle_extent = 1. / 32.;
-
-inline double smallest_extent(const CGAL::Bbox_3& box)
-{
-  return (std::min)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
-}
-
-inline double volume(const CGAL::Bbox_3& box)
-{
-  return (box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) * (box.zmax() - box.zmin());
-}
-
-// Cuts triangle abc 1-to-4 at its midpoints until its pieces are not fat, appending them.
-inline void append_pieces(std::vector<Dtriangle>::const_iterator triangle, const Dpoint& a, const Dpoint& b,
-                          const Dpoint& c, double fat, std::vector<Triangle_piece>& pieces)
-{
-  const CGAL::Bbox_3 box = a.bbox() + b.bbox() + c.bbox();
-  if(!(smallest_extent(box) > fat)) {
-    pieces.push_back({triangle, box, CGAL::centroid(a, b, c)});
-    return;
-  }
-  const Dpoint ab = CGAL::midpoint(a, b), bc = CGAL::midpoint(b, c), ca = CGAL::midpoint(c, a);
-  append_pieces(triangle, a, ab, ca, fat, pieces);
-  append_pieces(triangle, ab, b, bc, fat, pieces);
-  append_pieces(triangle, ca, bc, c, fat, pieces);
-  append_pieces(triangle, ab, bc, ca, fat, pieces);
-}
-
-// The primitives of the AABB tree of `triangles`: each triangle whole (its box, its first corner
-// as reference, as CGAL's AABB_triangle_primitive), unless their boxes overlap more than
-// box_overlap_left_whole on average; then the fat ones are cut.
-inline std::vector<Triangle_piece> triangle_pieces(const std::vector<Dtriangle>& triangles)
-{
-  CGAL::Bbox_3 all;
-  double overlap = 0.;
-  for(const Dtriangle& t : triangles) {
-    all += t.bbox();
-    overlap += volume(t.bbox());
-  }
-  const bool cut = overlap > box_overlap_left_whole * volume(all); // false on a flat soup (volume 0)
-  const double fat = fat_triangle_extent * std::sqrt(CGAL::square(all.xmax() - all.xmin()) +
-                                                     CGAL::square(all.ymax() - all.ymin()) +
-                                                     CGAL::square(all.zmax() - all.zmin()));
-  std::vector<Triangle_piece> pieces;
-  pieces.reserve(triangles.size());
-  for(auto t = triangles.begin(); t != triangles.end(); ++t) {
-    if(cut && smallest_extent(t->bbox()) > fat)
-      append_pieces(t, (*t)[0], (*t)[1], (*t)[2], fat, pieces);
-    else
-      pieces.push_back({t, t->bbox(), (*t)[0]});
-  }
-  return pieces;
-}
-
-// CGAL's AABB traits of triangle pieces, with the closest point of a triangle by
+// CGAL's AABB traits of triangles, with the closest point of a triangle by
 // closest_point_on_triangle().
-class Triangle_tree_traits : public CGAL::AABB_traits<Dkernel, Triangle_piece_primitive>
+class Triangle_tree_traits : public CGAL::AABB_traits<Dkernel, Triangle_primitive>
 {
 public:
   struct Closest_point
   {
-    // The closest point of the piece's whole triangle if it is closer to p than `bound`, else `bound`.
-    Dpoint operator()(const Dpoint& p, const Triangle_piece_primitive& primitive, const Dpoint& bound) const
+    // The closest point of the triangle if it is closer to p than `bound`, else `bound`.
+    Dpoint operator()(const Dpoint& p, const Triangle_primitive& primitive, const Dpoint& bound) const
     {
-      const Dtriangle& t = *primitive.id();
+      const Dtriangle& t = primitive.datum();
       const Eigen::Vector3d c = closest_point_on_triangle(to_eigen(p), to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2]));
       const Dpoint closest(c.x(), c.y(), c.z());
       return CGAL::squared_distance(p, closest) > CGAL::squared_distance(p, bound) ? bound : closest;

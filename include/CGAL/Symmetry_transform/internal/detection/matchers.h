@@ -50,8 +50,7 @@ public:
     bool valid = false;
   };
 
-  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles)
-    : pieces_(triangle_pieces(triangles)), tree_(pieces_.cbegin(), pieces_.cend())
+  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles) : tree_(triangles.begin(), triangles.end())
   {
     build_triangle_tree(tree_);
     tree_.accelerate_distance_queries();
@@ -77,7 +76,6 @@ public:
   const Triangle_tree& tree() const { return tree_; }
 
 private:
-  std::vector<Triangle_piece> pieces_; // the tree's primitives
   Triangle_tree tree_;
 };
 

@@ -204,8 +204,7 @@ void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid,
                                                    std::vector<std::int32_t>* closest_triangles = nullptr)
 {
   Progress_stage stage(0., progress_shares::gedt_tree);
-  const std::vector<Triangle_piece> pieces = triangle_pieces(triangles);
-  Triangle_tree tree(pieces.cbegin(), pieces.cend());
+  Triangle_tree tree(triangles.begin(), triangles.end());
   build_triangle_tree(tree);
   tree.accelerate_distance_queries();
   tree.squared_distance(CGAL::ORIGIN); // builds the search structure before threads share the tree
