@@ -30,6 +30,7 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <set>
 #include <vector>
 
 namespace {
@@ -152,6 +153,22 @@ TEST(ProgressCallback, DetectionProgressRisesToOneAndLeavesTheResultOnSurfaceMes
   const Surface_mesh mesh = bumped_ellipsoid(4);
   check_detection_progress(mesh);
   check_detection_progress(as_polyhedron(mesh));
+}
+
+// The refinements report their progress too: a value given between two calls of the callback is
+// kept for the next call. (It was lost to the polls of ISP's loops, which come more often than
+// once every 20 ms, and the bar stood still through the refinements, the last 45 % of this run.)
+TEST(ProgressCallback, DetectionProgressRisesThroughTheRefinements)
+{
+  Recorder r;
+  ST::detect_principal_symmetries(medium_mesh(), CGAL::parameters::number_of_threads(1).random_seed(1).callback(r.callback()));
+  ASSERT_GE(r.values.size(), 3u);
+  const double seconds = std::chrono::duration<double>(r.times.back() - r.times.front()).count();
+  std::set<double> last_quarter; // the values below 1 reported in the last quarter of the run
+  for(std::size_t i = 0; i < r.values.size(); ++i)
+    if(std::chrono::duration<double>(r.times[i] - r.times.front()).count() >= 0.75 * seconds && r.values[i] < 1.)
+      last_quarter.insert(r.values[i]);
+  EXPECT_GE(last_quarter.size(), 2u) << "the progress stood still through the last quarter of the run";
 }
 
 TEST(ProgressCallback, DetectionOfPointsAndSoupsReportProgress)
