@@ -17,6 +17,7 @@
 
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
+#include <CGAL/Symmetry_transform/internal/common/triangle_cells.h>
 
 #include "Symmetry_transform_test_shapes.h"
 
@@ -34,7 +35,9 @@
 #include <cmath>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -464,6 +467,71 @@ TEST(ClosestPoints, ClosestTriangleFieldIsNearTheExactSearchInTheBand)
     EXPECT_LT(median, 1e-3) << name;
     EXPECT_LT(p99, 0.2) << name;
   }
+}
+
+// An ellipsoid with 400 large triangles whose corners are drawn in its box (a web soup with stray
+// faces across the inside), and the point of it closest to p by testing every triangle.
+struct Soup_with_interior_triangles
+{
+  std::vector<STI::Dtriangle> triangles;
+  CGAL::Bbox_3 box;
+
+  explicit Soup_with_interior_triangles(CGAL::Random& rng)
+    : triangles(STI::triangles_of_mesh(ellipsoid<Surface_mesh>().mesh, CGAL::parameters::default_values()))
+  {
+    for(const STI::Dtriangle& t : triangles) box += t.bbox();
+    for(int t = 0; t < 400; ++t)
+      triangles.emplace_back(random_point(rng), random_point(rng), random_point(rng));
+  }
+
+  STI::Dpoint random_point(CGAL::Random& rng) const
+  {
+    return STI::Dpoint(rng.get_double(box.xmin(), box.xmax()), rng.get_double(box.ymin(), box.ymax()),
+                       rng.get_double(box.zmin(), box.zmax()));
+  }
+
+  Eigen::Vector3d closest_by_every_triangle(const Eigen::Vector3d& p) const
+  {
+    Eigen::Vector3d best = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    for(const STI::Dtriangle& t : triangles) {
+      const Eigen::Vector3d q = STI::closest_point_on_triangle(p, STI::to_eigen(t[0]), STI::to_eigen(t[1]), STI::to_eigen(t[2]));
+      if((p - q).squaredNorm() < (p - best).squaredNorm()) best = q;
+    }
+    return best;
+  }
+};
+
+// Large triangles across the inside make the boxes overlap far deeper than on any surface (the
+// matcher then searches the cells near a query): the cells find the closest point that testing
+// every triangle finds, whenever the soup has a point within the bound, and nothing when it has
+// none; through the matcher, searches with hints (as ISP's) are exact too.
+TEST(ClosestPoints, CellsOfASoupWithLargeInteriorTrianglesFindTheClosestPoint)
+{
+  CGAL::Random rng(31);
+  const Soup_with_interior_triangles soup(rng);
+  const std::vector<STI::Dtriangle> surface(soup.triangles.begin(), soup.triangles.end() - 400);
+  EXPECT_LT(STI::mean_box_overlap(surface), STI::deepest_box_overlap_for_tree);
+  ASSERT_GT(STI::mean_box_overlap(soup.triangles), STI::deepest_box_overlap_for_tree);
+  const STI::Triangle_cells cells(soup.triangles);
+  const STI::Triangle_matcher matcher(soup.triangles);
+  const double size = soup.box.xmax() - soup.box.xmin();
+  std::size_t answered = 0, none_within = 0;
+  STI::Triangle_matcher::Hint hint; // that of the previous query, as in ISP
+  for(int q = 0; q < 3000; ++q) {
+    const Eigen::Vector3d p = STI::to_eigen(soup.random_point(rng)), truth = soup.closest_by_every_triangle(p);
+    const double d = (p - truth).norm();
+    // A point of the soup within 1 % of the size farther than the closest, as a hint gives.
+    const Eigen::Vector3d known = soup.closest_by_every_triangle(p + 0.005 * size * Eigen::Vector3d::UnitX());
+    const std::optional<STI::Triangle_cells::Nearest> nearest = cells.closest(p, (p - known).norm());
+    if(nearest) {
+      ++answered;
+      ASSERT_NEAR((p - nearest->point).norm(), d, 1e-12 * size) << "query " << q;
+    }
+    if(d > 0. && !cells.closest(p, 0.5 * d)) ++none_within;
+    ASSERT_NEAR((p - matcher.closest(p, hint).first).norm(), d, 1e-12 * size) << "query " << q;
+  }
+  EXPECT_GT(answered, 2500u); // the others' bounds span more than max_cells_per_search cells
+  EXPECT_EQ(none_within, 3000u);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
+#include <CGAL/Symmetry_transform/internal/common/triangle_cells.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
 
 #include <Eigen/Core>
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -37,7 +39,9 @@ inline Eigen::Vector3d unit_normal(const Dtriangle& t)
   return to_eigen(CGAL::ORIGIN + CGAL::cross_product(t[1] - t[0], t[2] - t[0])).normalized();
 }
 
-// Exact closest points on a triangle soup, by its AABB tree.
+// Exact closest points on a triangle soup, by its AABB tree; where large triangles cross the
+// inside of the soup (their boxes overlap deeper than deepest_box_overlap_for_tree), a search with
+// a hint tests the triangles of the cells near the query instead (triangle_cells.h).
 class Triangle_matcher
 {
 public:
@@ -50,15 +54,26 @@ public:
     bool valid = false;
   };
 
-  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles) : tree_(triangles.begin(), triangles.end())
+  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles)
+    : triangles_(triangles), tree_(triangles.begin(), triangles.end())
   {
     build_triangle_tree(tree_);
     tree_.accelerate_distance_queries();
     tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
+    if(mean_box_overlap(triangles) > deepest_box_overlap_for_tree) cells_.emplace(triangles);
   }
+  explicit Triangle_matcher(std::vector<Dtriangle>&&) = delete; // it refers to the triangles
 
   Match closest(const Eigen::Vector3d& p, Hint& hint) const
   {
+    if(cells_ && hint.valid) {
+      // The hint's match is a point of the soup: the closest one is no farther.
+      const std::optional<Triangle_cells::Nearest> nearest = cells_->closest(p, (p - to_eigen(hint.match.first)).norm());
+      if(nearest) {
+        hint.match = {to_dpoint(nearest->point), triangles_.begin() + std::ptrdiff_t(nearest->triangle)};
+        return {nearest->point, unit_normal(triangles_[nearest->triangle])};
+      }
+    }
     const Dpoint query = to_dpoint(p);
     hint.match = hint.valid ? tree_.closest_point_and_primitive(query, hint.match)
                             : tree_.closest_point_and_primitive(query);
@@ -76,7 +91,9 @@ public:
   const Triangle_tree& tree() const { return tree_; }
 
 private:
+  const std::vector<Dtriangle>& triangles_;
   Triangle_tree tree_;
+  std::optional<Triangle_cells> cells_; // only for soups whose boxes overlap deeply
 };
 
 // Approximate closest points on a triangle soup, about ten times cheaper than the exact search:
