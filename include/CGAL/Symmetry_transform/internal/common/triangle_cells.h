@@ -74,7 +74,7 @@ public:
     for(const Dtriangle& t : triangles) box += t.bbox();
     double longest = 0.;
     for(int a = 0; a < 3; ++a) longest = (std::max)(longest, box.max(a) - box.min(a));
-    cell_size_ = longest / double(triangle_cells_per_side);
+    cell_size_ = longest > 0. ? longest / double(triangle_cells_per_side) : 1.; // 1: a soup that is one point
     for(int a = 0; a < 3; ++a) {
       origin_[a] = box.min(a);
       dims_[a] = long((std::min)(triangle_cells_per_side, (std::max)(std::size_t(1),
@@ -130,11 +130,14 @@ private:
 
   std::size_t index_of(long i, long j, long k) const { return std::size_t((k * dims_[1] + j) * dims_[0] + i); }
 
+  // The cells at the ends of an axis reach to infinity: cell_of() clamps points beyond them there.
   double squared_distance_to_cell(const Eigen::Vector3d& p, const std::array<long, 3>& cell) const
   {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
     double d2 = 0.;
     for(int a = 0; a < 3; ++a) {
-      const double low = origin_[a] + double(cell[a]) * cell_size_, high = low + cell_size_;
+      const double low = cell[a] == 0 ? -infinity : origin_[a] + double(cell[a]) * cell_size_,
+                   high = cell[a] == dims_[a] - 1 ? infinity : origin_[a] + double(cell[a] + 1) * cell_size_;
       const double gap = (std::max)({low - p[a], p[a] - high, 0.});
       d2 += gap * gap;
     }
