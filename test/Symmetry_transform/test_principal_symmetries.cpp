@@ -504,7 +504,8 @@ struct Soup_with_interior_triangles
 // Large triangles across the inside make the boxes overlap far deeper than on any surface (the
 // matcher then searches the cells near a query): the cells find the closest point that testing
 // every triangle finds, whenever the soup has a point within the bound, and nothing when it has
-// none; through the matcher, searches with hints (as ISP's) are exact too.
+// none; through the matcher, searches with hints (as ISP's) are exact too. Cells that would list
+// more members than allowed are not built, and answer nothing.
 TEST(ClosestPoints, CellsOfASoupWithLargeInteriorTrianglesFindTheClosestPoint)
 {
   CGAL::Random rng(31);
@@ -512,7 +513,9 @@ TEST(ClosestPoints, CellsOfASoupWithLargeInteriorTrianglesFindTheClosestPoint)
   const std::vector<STI::Dtriangle> surface(soup.triangles.begin(), soup.triangles.end() - 400);
   EXPECT_LT(STI::mean_box_overlap(surface), STI::deepest_box_overlap_for_tree);
   ASSERT_GT(STI::mean_box_overlap(soup.triangles), STI::deepest_box_overlap_for_tree);
-  const STI::Triangle_cells cells(soup.triangles);
+  const STI::Triangle_cells cells(soup.triangles), too_many(soup.triangles, 1000);
+  ASSERT_TRUE(cells.built());
+  EXPECT_FALSE(too_many.built());
   const STI::Triangle_matcher matcher(soup.triangles);
   const double size = soup.box.xmax() - soup.box.xmin();
   std::size_t answered = 0, none_within = 0;
@@ -528,6 +531,7 @@ TEST(ClosestPoints, CellsOfASoupWithLargeInteriorTrianglesFindTheClosestPoint)
       ASSERT_NEAR((p - nearest->point).norm(), d, 1e-12 * size) << "query " << q;
     }
     if(d > 0. && !cells.closest(p, 0.5 * d)) ++none_within;
+    EXPECT_FALSE(too_many.closest(p, (p - known).norm()));
     ASSERT_NEAR((p - matcher.closest(p, hint).first).norm(), d, 1e-12 * size) << "query " << q;
   }
   EXPECT_GT(answered, 2500u); // the others' bounds span more than max_cells_per_search cells

@@ -37,6 +37,9 @@ constexpr double deepest_box_overlap_for_tree = 32.;
 constexpr std::size_t triangle_cells_per_side = 64;
 // A search whose bound spans more cells than this is left to the tree (a poor bound).
 constexpr std::size_t max_cells_per_search = 64;
+// The cells list at most this many members in all (256 MB): on a soup of very many large
+// triangles they are not built, and the tree answers every search (slow, in bounded memory).
+constexpr std::size_t max_cell_members = std::size_t(1) << 26;
 // Cells and bounds are widened by this fraction of a cell, so that rounding cannot leave out
 // a triangle that touches a cell.
 constexpr double cell_margin = 1e-6;
@@ -67,8 +70,9 @@ public:
     std::size_t triangle; // its index in the soup
   };
 
-  // `triangles` must outlive the cells.
-  explicit Triangle_cells(const std::vector<Dtriangle>& triangles) : triangles_(triangles)
+  // `triangles` must outlive the cells; if they would list more than `max_members`, none are built.
+  explicit Triangle_cells(const std::vector<Dtriangle>& triangles, std::size_t max_members = max_cell_members)
+    : triangles_(triangles)
   {
     CGAL::Bbox_3 box;
     for(const Dtriangle& t : triangles) box += t.bbox();
@@ -80,13 +84,17 @@ public:
       dims_[a] = long((std::min)(triangle_cells_per_side, (std::max)(std::size_t(1),
                       std::size_t(std::ceil((box.max(a) - box.min(a)) / cell_size_)))));
     }
-    fill();
+    fill(max_members);
   }
 
+  bool built() const { return !starts_.empty(); }
+
   // The point of the soup closest to p and its triangle, if the soup has a point within `bound`
-  // of p and the cells within `bound` are at most max_cells_per_search; nullopt otherwise.
+  // of p and the cells within `bound` are at most max_cells_per_search; nullopt otherwise (and
+  // always if the cells were not built).
   std::optional<Nearest> closest(const Eigen::Vector3d& p, double bound) const
   {
+    if(!built()) return std::nullopt;
     const double reach = bound * (1. + cell_margin) + cell_margin * cell_size_;
     std::array<long, 3> lo, hi;
     std::size_t count = 1;
@@ -144,12 +152,22 @@ private:
     return d2;
   }
 
-  // Two passes over the triangles, one to count the members of each cell, one to list them.
-  void fill()
+  // Two passes over the triangles, one to count the members of each cell, one to list them; the
+  // count stops as soon as it exceeds `max_members`, and nothing is built.
+  void fill(std::size_t max_members)
   {
     starts_.assign(std::size_t(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
-    for(const Dtriangle& t : triangles_)
-      for_each_cell_crossed(t, [&](std::size_t cell) { ++starts_[cell + 1]; });
+    std::size_t members = 0;
+    for(const Dtriangle& t : triangles_) {
+      for_each_cell_crossed(t, [&](std::size_t cell) {
+        ++starts_[cell + 1];
+        ++members;
+      });
+      if(members > max_members) {
+        starts_ = std::vector<std::uint32_t>();
+        return;
+      }
+    }
     for(std::size_t c = 1; c < starts_.size(); ++c) starts_[c] += starts_[c - 1];
     members_.resize(starts_.back());
     std::vector<std::uint32_t> next(starts_.begin(), starts_.end() - 1);

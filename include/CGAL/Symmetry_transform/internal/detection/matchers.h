@@ -60,7 +60,10 @@ public:
     build_triangle_tree(tree_);
     tree_.accelerate_distance_queries();
     tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
-    if(mean_box_overlap(triangles) > deepest_box_overlap_for_tree) cells_.emplace(triangles);
+    if(mean_box_overlap(triangles) > deepest_box_overlap_for_tree) {
+      cells_.emplace(triangles);
+      if(!cells_->built()) cells_.reset(); // too many members (max_cell_members): the tree alone
+    }
   }
   explicit Triangle_matcher(std::vector<Dtriangle>&&) = delete; // it refers to the triangles
 
