@@ -130,10 +130,11 @@ public:
   }
 
 private:
+  // Clamped to the grid (compared as doubles: a far or infinite x converts to no long).
   long cell_of(int axis, double x) const
   {
     const double c = std::floor((x - origin_[axis]) / cell_size_);
-    return c <= 0. ? 0L : (std::min)(long(c), dims_[axis] - 1);
+    return !(c > 0.) ? 0L : c >= double(dims_[axis] - 1) ? dims_[axis] - 1 : long(c);
   }
 
   std::size_t index_of(long i, long j, long k) const { return std::size_t((k * dims_[1] + j) * dims_[0] + i); }
