@@ -7,7 +7,9 @@
 // best_viewpoints() and the nearest axis of the symmetry frame of the same detection. With
 // --diagnostics 1, per mesh, the principal planes (measure, support, angle to the nearest frame
 // axis) and the best view's angle when the planes are given otherwise: near-duplicate normals
-// counted once, the weights multiplied by the supports, only the frame's planes.
+// counted once, the weights multiplied by the supports, only the frame's planes; the thesis's W
+// (every local maximum of the PRST, or the detection's candidates, weighted by the transform);
+// the measures raised to a power (sharper contrast between the planes).
 //
 // usage: viewpoint_experiment [--meshes a.off,...] [--resolution N] [--cache DIR] [--diagnostics 1]
 // Figures and the commands that produced them: RESULTS.md.
@@ -102,6 +104,29 @@ std::vector<Symmetry> support_weighted(std::vector<Symmetry> symmetries)
   return symmetries;
 }
 
+// The thesis's W (section 4.3): every local maximum of the PRST, weighted by its value; with
+// `thresholds`, only the maxima that the detection refines (its candidates).
+std::vector<Symmetry> transform_maxima(const ST::Reflective_symmetry_transform<K>& prst, bool thresholds)
+{
+  std::vector<std::array<std::size_t, 3>> maxima;
+  if(thresholds) {
+    const STI::Candidate_settings c = STI::candidate_settings(CGAL::parameters::default_values());
+    maxima = STI::symmetry_candidates(prst, c.symmetry_threshold, c.laplacian_threshold);
+  } else {
+    prst.local_maxima(std::back_inserter(maxima));
+  }
+  std::vector<Symmetry> planes;
+  for(const auto& b : maxima) planes.push_back({prst.plane(b), prst.value(b), 1.});
+  return planes;
+}
+
+// The measures raised to `power`: a stronger contrast between the planes.
+std::vector<Symmetry> sharpened(std::vector<Symmetry> symmetries, double power)
+{
+  for(Symmetry& s : symmetries) s.symmetry = std::pow(s.symmetry, power);
+  return symmetries;
+}
+
 std::string fixed(double x, int digits = 1)
 {
   std::ostringstream out;
@@ -146,9 +171,9 @@ try {
   std::cout << "Command: `viewpoint_experiment --meshes " << o.meshes << " --resolution " << o.resolution << "`\n\n"
             << "| mesh | planes | best view's angle to the nearest frame axis (deg) | normals within 10 deg counted once "
             << "| weights M x support | both | 3 strongest normals 10 deg apart | 3 strongest 30 deg apart | M less the "
-            << "weakest M | the same, merged |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+            << "weakest M | the same, merged | all PRST maxima | PRST candidates | M^2 | M^3 | M^4 |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   const auto np = CGAL::parameters::grid_resolution(o.resolution).random_seed(1);
-  int in_range = 0, count = 0;
+  int in_range = 0, in_range_maxima = 0, in_range_candidates = 0, count = 0, in_range_sharpened[3] = {0, 0, 0};
   for(const std::string& name : benchmark_utilities::split(o.meshes)) {
     Mesh mesh;
     if(!CGAL::IO::read_polygon_mesh(benchmark_utilities::mesh_path(name), mesh) || is_empty(mesh)) {
@@ -167,15 +192,27 @@ try {
     const double three30 = off_axis(best_view(strongest_distinct(d.symmetries, 3, 30.)), frame);
     const double contrast = off_axis(best_view(contrasted(d.symmetries)), frame);
     const double contrast_merged = off_axis(best_view(distinct_normals(contrasted(d.symmetries), 10.)), frame);
+    const double maxima = off_axis(best_view(transform_maxima(d.prst, false)), frame);
+    const double candidates = off_axis(best_view(transform_maxima(d.prst, true)), frame);
     std::cout << "| " << name << " | " << d.symmetries.size() << " | " << fixed(angle) << " | " << fixed(merged) << " | "
               << fixed(weighted) << " | " << fixed(both) << " | " << fixed(three) << " | " << fixed(three30) << " | "
-              << fixed(contrast) << " | " << fixed(contrast_merged) << " |\n";
+              << fixed(contrast) << " | " << fixed(contrast_merged) << " | " << fixed(maxima) << " | " << fixed(candidates);
+    for(const double power : {2., 3., 4.}) {
+      const double sharp = off_axis(best_view(sharpened(d.symmetries, power)), frame);
+      std::cout << " | " << fixed(sharp);
+      in_range_sharpened[int(power) - 2] += sharp >= 15. && sharp <= 40.;
+    }
+    std::cout << " |\n";
+    in_range_maxima += maxima >= 15. && maxima <= 40.;
+    in_range_candidates += candidates >= 15. && candidates <= 40.;
     if(o.diagnostics) print_planes(d.symmetries, frame);
     in_range += angle >= 15. && angle <= 40.;
     ++count;
   }
   std::cout << "\nBest view 15 to 40 degrees from the nearest frame axis on " << in_range << " of " << count
-            << " meshes.\n";
+            << " meshes; with all PRST maxima " << in_range_maxima << ", with the PRST candidates " << in_range_candidates
+            << "; with M^2, M^3, M^4 " << in_range_sharpened[0] << ", " << in_range_sharpened[1] << ", "
+            << in_range_sharpened[2] << ".\n";
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {
