@@ -519,7 +519,7 @@ TEST(ClosestPoints, CellsOfASoupWithLargeInteriorTrianglesFindTheClosestPoint)
   const STI::Triangle_matcher matcher(soup.triangles);
   const double size = soup.box.xmax() - soup.box.xmin();
   std::size_t answered = 0, none_within = 0;
-  STI::Triangle_matcher::Hint hint; // that of the previous query, as in ISP
+  STI::Triangle_matcher::Hint previous; // the match of the previous query: mostly far, the tree answers
   for(int q = 0; q < 3000; ++q) {
     const Eigen::Vector3d p = STI::to_eigen(soup.random_point(rng)), truth = soup.closest_by_every_triangle(p);
     const double d = (p - truth).norm();
@@ -532,7 +532,11 @@ TEST(ClosestPoints, CellsOfASoupWithLargeInteriorTrianglesFindTheClosestPoint)
     }
     if(d > 0. && !cells.closest(p, 0.5 * d)) ++none_within;
     EXPECT_FALSE(too_many.closest(p, (p - known).norm()));
-    ASSERT_NEAR((p - matcher.closest(p, hint).first).norm(), d, 1e-12 * size) << "query " << q;
+    ASSERT_NEAR((p - matcher.closest(p, previous).first).norm(), d, 1e-12 * size) << "query " << q;
+    // A hint as close as `known` (as ISP's walk gives): the matcher searches the cells.
+    STI::Triangle_matcher::Hint near;
+    matcher.closest(p + 0.005 * size * Eigen::Vector3d::UnitX(), near);
+    ASSERT_NEAR((p - matcher.closest(p, near).first).norm(), d, 1e-12 * size) << "query " << q;
   }
   EXPECT_GT(answered, 2500u); // the others' bounds span more than max_cells_per_search cells
   EXPECT_EQ(none_within, 3000u);
