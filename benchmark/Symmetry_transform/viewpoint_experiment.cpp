@@ -23,6 +23,7 @@
 #include <CGAL/Symmetry_transform/viewpoint_selection.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
