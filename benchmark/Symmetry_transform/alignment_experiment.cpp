@@ -29,7 +29,10 @@
 // transform); with --errors FILE, every scan's errors (for plot_alignment_histograms.py).
 //
 // usage: alignment_experiment [--set demo|man-made] [--meshes a.off,b.off,...] [--resolution N]
-//        [--rays N] [--cache DIR] [--rules greedy,joint,...] [--diagnostics 1] [--errors FILE]
+//        [--rays N] [--samples N] [--seed N] [--cache DIR] [--rules greedy,joint,...] [--diagnostics 1]
+//        [--errors FILE]
+// --samples: Monte Carlo pairs of each detection's PRST (default: the detection's own, 5e5);
+// --seed: their seed (default 1). A cache holds the detections of one choice of both.
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -86,7 +89,7 @@ const char* default_meshes = "bull.off,cow.off,camel.off,dino.off,elephant.off,t
 
 int positive(const std::string& option, const std::string& text)
 {
-  if(text.empty() || text.size() > 6 || text.find_first_not_of("0123456789") != std::string::npos || std::stoi(text) < 1)
+  if(text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos || std::stoi(text) < 1)
     throw std::invalid_argument(option + " expects a positive integer, not '" + text + "'");
   return std::stoi(text);
 }
@@ -220,10 +223,17 @@ Rule rule_of(const STI::Frame_rule& rule)
 
 Rule rule_of(bool joint, bool support_weighted, bool least_squares_center, bool accumulate = false,
              bool order_by_accumulated = false, int variance_order = 0, double mass_prior = 0., double pca_below = 0.,
-             bool blend_only_when_weak = false)
+             bool blend_only_when_weak = false, bool searched_through_mass = false)
 {
   return rule_of(STI::Frame_rule{joint, support_weighted, least_squares_center, accumulate, order_by_accumulated,
-                                 variance_order, mass_prior, pca_below, blend_only_when_weak});
+                                 variance_order, mass_prior, pca_below, blend_only_when_weak, searched_through_mass});
+}
+
+// A rule whose searched planes pass through the centre of mass.
+Rule with_searched_through_mass(STI::Frame_rule rule)
+{
+  rule.searched_through_mass = true;
+  return rule_of(rule);
 }
 
 std::map<std::string, Rule> rules()
@@ -262,6 +272,11 @@ std::map<std::string, Rule> rules()
           {"joint_var_weak_prior_inertia8", rule_of(true, false, true, false, false, 1, 0.2, 0.8, true)},
           {"joint_var_weak_prior5_inertia9", rule_of(true, false, true, false, false, 1, 0.5, 0.9, true)},
           {"greedy_var_inertia", rule_of(false, false, false, false, false, 1, 0., 1.)},
+          {"greedy_mass", rule_of(false, false, false, false, false, 0, 0., 0., false, true)},
+          {"joint_mass", rule_of(true, false, false, false, false, 0, 0., 0., false, true)},
+          {"joint_var_mass", rule_of(true, false, false, false, false, 1, 0., 0., false, true)},
+          {"joint_var_inertia_mass", rule_of(true, false, false, false, false, 1, 0., 1., false, true)},
+          {"joint_var_prior_inertia_mass", with_searched_through_mass(STI::partial_data_rule)},
           {"greedy_ls_var_prior_inertia", rule_of(false, false, true, false, false, 1, 0.2, 1.)}};
 }
 
@@ -371,7 +386,8 @@ struct Options
 {
   std::string set = "demo", meshes = default_meshes, cache, errors_file;
   std::vector<std::string> rules = {"greedy"};
-  int resolution = 64, rays = 120;
+  int resolution = 64, rays = 120, seed = 1;
+  long samples = long(STI::defaults::detection_monte_carlo_pairs); // of each detection's PRST
   bool diagnostics = false;
 };
 
@@ -383,6 +399,8 @@ Options parse(int argc, char** argv)
     else if(arg == "--meshes") o.meshes = value;
     else if(arg == "--resolution") o.resolution = positive(arg, value);
     else if(arg == "--rays") o.rays = positive(arg, value);
+    else if(arg == "--samples") o.samples = positive(arg, value);
+    else if(arg == "--seed") o.seed = positive(arg, value);
     else if(arg == "--cache") o.cache = value;
     else if(arg == "--rules") o.rules = split(value);
     else if(arg == "--diagnostics") o.diagnostics = value != "0";
@@ -473,8 +491,9 @@ int main(int argc, char** argv)
 try {
   const Options o = parse(argc, argv);
   std::cout << "Command: `alignment_experiment --set " << o.set << (o.set == "demo" ? " --meshes " + o.meshes : "")
-            << " --resolution " << o.resolution << " --rays " << o.rays << "`\n" << std::fixed << std::setprecision(3);
-  const auto np = CGAL::parameters::grid_resolution(o.resolution).random_seed(1);
+            << " --resolution " << o.resolution << " --rays " << o.rays << " --samples " << o.samples
+            << " --seed " << o.seed << "`\n" << std::fixed << std::setprecision(3);
+  const auto np = CGAL::parameters::grid_resolution(o.resolution).random_seed(unsigned(o.seed)).number_of_samples(std::size_t(o.samples));
   const std::map<std::string, Rule> known = rules();
   std::map<std::string, Tally> tallies;
   Tally pca;
