@@ -50,8 +50,6 @@ struct Frame_rule
                                       // fraction of the first (0: never)
   bool blend_only_when_weak = false;  // the least-squares centre and the mass prior only with axes from
                                       // inertia; otherwise the intersection of the three planes
-  bool searched_through_mass = false; // a plane searched in the transform (no principal symmetry) fixes
-                                      // the centre where the centre of mass does along its normal
 };
 
 // The weight of the centre of mass in the least-squares centre of the rule for partial data: 0.2
@@ -306,9 +304,6 @@ Frame_choice frame_choice(const Mass_distribution& mass, const std::vector<Princ
     axes = first_axis_and_inertia(strongest, mass);
     if(rule.variance_order == 1) axes = by_variance(axes, mass);
   }
-  if(rule.searched_through_mass)
-    for(Frame_plane& f : choice.planes)
-      if(f.principal == searched_plane) f.plane.offset = f.plane.normal.dot(mass.center());
   const bool blend = rule.least_squares_center && (inertia || !rule.blend_only_when_weak);
   const Eigen::Vector3d center =
     blend ? least_squares_center(choice.planes, planes, prst, mass.center(), rule.mass_prior) : intersection(choice.planes);
