@@ -19,7 +19,8 @@
 //
 // The symmetry frame is computed by the rule of symmetry_frame() (greedy), by that of its
 // partial_data(true) (joint_var_prior_inertia) and, for comparison, by the other rules of
-// internal/alignment/joint_frame.h (--rules), all from one detection of the
+// internal/alignment/joint_frame.h (--rules), and by the rules `full*` of this program (the three
+// orthogonal planes searched in the whole transform, RESULTS.md, seventh session), all from one detection of the
 // principal symmetries per scan and per whole shape (cached in --cache DIR if given, so that
 // rules are compared without detecting again). Prints, per rule, a row per shape, the
 // histograms of both errors, the fraction of scans whose centre of symmetry is closer to its
@@ -248,6 +249,110 @@ Rule with_searched_through_mass(const STI::Frame_rule& rule)
   };
 }
 
+// The thesis's suggested search (section 4.1.4): the three mutually orthogonal planes of the
+// whole transform that hold the most symmetry together, each at its best offset. Every direction
+// bin of the PRST (its best value over the offsets) is tried as the first normal, with
+// full_search_turns normals perpendicular to it; the chosen normals are then refined to their
+// best offsets. `variance_order`: axes by the variance of the mass; `mass_prior`: the centre as
+// the least-squares one of the three planes (weights: their values) with the centre of mass.
+constexpr int full_search_turns = 180;
+
+// The three orthonormal normals turned, by ever smaller rotations about each of them, to the
+// largest summed value of their strongest planes in the transform (offsets searched each time).
+std::array<Eigen::Vector3d, 3> refined_normals(std::array<Eigen::Vector3d, 3> normals, const Detection& d)
+{
+  const auto score = [&](const std::array<Eigen::Vector3d, 3>& m) {
+    double sum = 0.;
+    for(const Eigen::Vector3d& v : m) sum += STI::strongest_plane_of_normal(d.prst, v).second;
+    return sum;
+  };
+  double current = score(normals);
+  for(double step = 2.; step > 0.02; step /= 2.)
+    for(bool improved = true; improved;) {
+      improved = false;
+      for(int axis = 0; axis < 3; ++axis)
+        for(const double sign : {-1., 1.}) {
+          const Eigen::Matrix3d r = Eigen::AngleAxisd(sign * step * CGAL_PI / 180., normals[std::size_t(axis)]).toRotationMatrix();
+          const std::array<Eigen::Vector3d, 3> turned = {r * normals[0], r * normals[1], r * normals[2]};
+          const double s = score(turned);
+          if(s > current) { current = s; normals = turned; improved = true; }
+        }
+    }
+  return normals;
+}
+
+Rule full_search(bool variance_order, double mass_prior, double weak_fraction = 0., bool refine = false,
+                 bool snap = false, bool snap_normals = false)
+{
+  return [=](const STI::Mass_distribution& mass, const Detection& d) {
+    const std::size_t n = d.prst.resolution();
+    std::vector<double> best(n * n, 0.);
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < n; ++j)
+        for(std::size_t k = 0; k < n; ++k) best[i * n + j] = std::max(best[i * n + j], d.prst.value(i, j, k));
+    const K::Point_3 c = d.prst.center();
+    const auto direction_value = [&](const Eigen::Vector3d& v) {
+      const auto b = d.prst.bin(K::Plane_3(c, K::Vector_3(v.x(), v.y(), v.z())));
+      return best[b[0] * n + b[1]];
+    };
+    std::pair<std::array<Eigen::Vector3d, 3>, double> top{{}, -1.};
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = 0; j < n; ++j) {
+        const K::Vector_3 u = d.prst.plane(i, j, n / 2).orthogonal_vector();
+        const Eigen::Vector3d n1 = Eigen::Vector3d(u.x(), u.y(), u.z()).normalized();
+        const Eigen::Vector3d e1 = n1.unitOrthogonal(), e2 = n1.cross(e1);
+        for(int t = 0; t < full_search_turns; ++t) {
+          const double a = CGAL_PI * t / full_search_turns;
+          const Eigen::Vector3d n2 = std::cos(a) * e1 + std::sin(a) * e2, n3 = n1.cross(n2);
+          const double score = best[i * n + j] + direction_value(n2) + direction_value(n3);
+          if(score > top.second) top = {{n1, n2, n3}, score};
+        }
+      }
+    if(refine) top.first = refined_normals(top.first, d);
+    STI::Frame_choice choice;
+    std::array<double, 3> value;
+    for(int k = 0; k < 3; ++k) {
+      const std::pair<STI::Dplane, double> p = STI::strongest_plane_of_normal(d.prst, top.first[std::size_t(k)]);
+      choice.planes[std::size_t(k)] = {p.first, STI::searched_plane};
+      value[std::size_t(k)] = p.second;
+    }
+    const std::vector<STI::Weighted_plane> principal = STI::weighted_planes(d.symmetries, STI::Frame_rule{});
+    if(snap)
+      for(std::size_t k = 0; k < 3; ++k) {
+        const int nearest = STI::strongest_principal(principal, choice.planes[k].plane.normal, true, {-1, -1});
+        if(nearest >= 0) choice.planes[k] = {principal[std::size_t(nearest)].plane, nearest};
+      }
+    if(snap_normals)
+      for(std::size_t k = 0; k < 3; ++k) {
+        const int nearest = STI::strongest_principal(principal, choice.planes[k].plane.normal, true, {-1, -1});
+        if(nearest < 0) continue;
+        const std::pair<STI::Dplane, double> p = STI::strongest_plane_of_normal(d.prst, principal[std::size_t(nearest)].plane.normal);
+        choice.planes[k].plane = p.first;
+        value[k] = p.second;
+      }
+    const double strongest = std::max({value[0], value[1], value[2]});
+    for(std::size_t k = 0; k < 3; ++k)
+      if(value[k] < weak_fraction * strongest)
+        choice.planes[k].plane.offset = choice.planes[k].plane.normal.dot(mass.center());
+    std::array<int, 3> order = {0, 1, 2};
+    const Eigen::Matrix3d covariance = mass.covariance();
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      const Eigen::Vector3d &na = choice.planes[std::size_t(a)].plane.normal, &nb = choice.planes[std::size_t(b)].plane.normal;
+      return variance_order ? na.dot(covariance * na) > nb.dot(covariance * nb) : value[std::size_t(a)] > value[std::size_t(b)];
+    });
+    choice.planes = {choice.planes[std::size_t(order[0])], choice.planes[std::size_t(order[1])], choice.planes[std::size_t(order[2])]};
+    std::array<Eigen::Vector3d, 3> axes;
+    axes[0] = choice.planes[0].plane.normal;
+    const Eigen::Vector3d& m = choice.planes[1].plane.normal;
+    axes[1] = (m - m.dot(axes[0]) * axes[0]).normalized();
+    axes[2] = axes[0].cross(axes[1]);
+    const Eigen::Vector3d center = mass_prior > 0. ? STI::least_squares_center(choice.planes, snap ? principal : std::vector<STI::Weighted_plane>{}, d.prst, mass.center(), mass_prior)
+                                                   : STI::intersection(choice.planes);
+    choice.frame = {center, STI::oriented_axes(axes, center, mass)};
+    return choice;
+  };
+}
+
 std::map<std::string, Rule> rules()
 {
   return {{"greedy", greedy_rule},
@@ -289,7 +394,32 @@ std::map<std::string, Rule> rules()
           {"joint_var_mass", with_searched_through_mass({true, false, false, false, false, 1, 0., 0., false})},
           {"joint_var_inertia_mass", with_searched_through_mass({true, false, false, false, false, 1, 0., 1., false})},
           {"joint_var_prior_inertia_mass", with_searched_through_mass(STI::partial_data_rule)},
-          {"greedy_ls_var_prior_inertia", rule_of(false, false, true, false, false, 1, 0.2, 1.)}};
+          {"greedy_ls_var_prior_inertia", rule_of(false, false, true, false, false, 1, 0.2, 1.)},
+          {"full", full_search(false, 0.)},
+          {"full_var", full_search(true, 0.)},
+          {"full_var_prior", full_search(true, 0.2)},
+          {"full_prior", full_search(false, 0.2)},
+          {"full_var_refined", full_search(true, 0., 0., true)},
+          {"full_var_prior_refined", full_search(true, 0.2, 0., true)},
+          {"full_var_snap", full_search(true, 0., 0., false, true)},
+          {"full_var_prior_snap", full_search(true, 0.2, 0., false, true)},
+          {"full_var_refined_snap", full_search(true, 0., 0., true, true)},
+          {"full_var_prior_refined_snap", full_search(true, 0.2, 0., true, true)},
+          {"full_var_nsnap", full_search(true, 0., 0., false, false, true)},
+          {"full_var_prior_nsnap", full_search(true, 0.2, 0., false, false, true)},
+          {"full_var_refined_nsnap", full_search(true, 0., 0., true, false, true)},
+          {"full_var_prior_refined_nsnap", full_search(true, 0.2, 0., true, false, true)},
+          {"full_var_prior1_nsnap", full_search(true, 0.1, 0., false, false, true)},
+          {"full_var_prior3_nsnap", full_search(true, 0.3, 0., false, false, true)},
+          {"full_var_prior10_nsnap", full_search(true, 1.0, 0., false, false, true)},
+          {"full_var_prior35_nsnap", full_search(true, 0.35, 0., false, false, true)},
+          {"full_var_prior4_nsnap", full_search(true, 0.4, 0., false, false, true)},
+          {"full_var_prior5_nsnap", full_search(true, 0.5, 0., false, false, true)},
+          {"full_var_prior45_nsnap", full_search(true, 0.45, 0., false, false, true)},
+          {"full_var_weak6", full_search(true, 0., 0.6)},
+          {"full_var_weak7", full_search(true, 0., 0.7)},
+          {"full_var_weak8", full_search(true, 0., 0.8)},
+          {"full_var_weak9", full_search(true, 0., 0.9)}};
 }
 
 // What a rule (or PCA) gave over all scans of a set.

@@ -9,7 +9,9 @@
 // axis) and the best view's angle when the planes are given otherwise: near-duplicate normals
 // counted once, the weights multiplied by the supports, only the frame's planes; the thesis's W
 // (every local maximum of the PRST, or the detection's candidates, weighted by the transform);
-// the measures raised to a power (sharper contrast between the planes).
+// the measures raised to a power (sharper contrast between the planes); the measures less a
+// quantile of the transform's directions' best values; the measures times the planes' prominence
+// over the planes tilted around them.
 //
 // usage: viewpoint_experiment [--meshes a.off,...] [--resolution N] [--cache DIR] [--diagnostics 1]
 // Figures and the commands that produced them: RESULTS.md.
@@ -29,6 +31,7 @@
 #include <iomanip>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -128,6 +131,72 @@ std::vector<Symmetry> sharpened(std::vector<Symmetry> symmetries, double power)
   return symmetries;
 }
 
+// The highest PRST value over the planes of normal `n` whose offsets from the transform's centre lie
+// within `reach` of `offset`.
+double best_offset_value(const ST::Reflective_symmetry_transform<K>& prst, const Eigen::Vector3d& n, double offset,
+                         double reach)
+{
+  const K::Point_3& c = prst.center();
+  double best = 0.;
+  for(double t = offset - reach; t <= offset + reach; t += 0.5 * 2. * prst.radius() / double(prst.resolution())) {
+    if(std::abs(t) >= prst.radius()) continue;
+    const K::Vector_3 u(n.x(), n.y(), n.z());
+    best = std::max(best, prst.value(K::Plane_3(c + t * u, u)));
+  }
+  return best;
+}
+
+// The planes weighted by how far their PRST value rises above that of the planes tilted by
+// `degrees` (the mean over a ring of tilts, each at its best offset): a maximum in a flat transform
+// weighs little, a sharp symmetry its full measure.
+std::vector<Symmetry> prominent(std::vector<Symmetry> symmetries, const ST::Reflective_symmetry_transform<K>& prst,
+                                double degrees)
+{
+  const double tilt = degrees * CGAL_PI / 180., reach = 0.25 * prst.radius();
+  const int ring = 16;
+  for(Symmetry& s : symmetries) {
+    const Eigen::Vector3d n = STI::to_dplane(s.plane).normal;
+    const K::Point_3& c = prst.center();
+    const double offset = -(s.plane.a() * c.x() + s.plane.b() * c.y() + s.plane.c() * c.z() + s.plane.d()) /
+                          std::sqrt(s.plane.orthogonal_vector().squared_length());
+    const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    double around = 0.;
+    for(int a = 0; a < ring; ++a) {
+      const double alpha = 2. * CGAL_PI * a / ring;
+      const Eigen::Vector3d m = std::cos(tilt) * n + std::sin(tilt) * (std::cos(alpha) * e1 + std::sin(alpha) * e2);
+      around += best_offset_value(prst, m, offset * m.dot(n), reach) / ring;
+    }
+    const double peak = best_offset_value(prst, n, offset, 0.5 * prst.radius() / prst.resolution());
+    s.symmetry = peak > 0. ? s.symmetry * std::max(0., peak - around) / peak : 0.;
+  }
+  return symmetries;
+}
+
+// The `fraction` quantile, over the directions of the transform (weighted by their solid angle),
+// of the best PRST value of each direction: the symmetry that planes in general position have.
+double direction_quantile(const ST::Reflective_symmetry_transform<K>& prst, double fraction)
+{
+  const std::size_t n = prst.resolution();
+  std::vector<std::pair<double, double>> best;  // (value, solid angle)
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j) {
+      double v = 0.;
+      for(std::size_t k = 0; k < n; ++k) v = std::max(v, prst.value(i, j, k));
+      best.push_back({v, std::sin(prst.theta(i))});
+    }
+  std::sort(best.begin(), best.end());
+  double total = 0., seen = 0.;
+  for(const auto& b : best) total += b.second;
+  for(const auto& b : best) if((seen += b.second) >= fraction * total) return b.first;
+  return best.back().first;
+}
+
+std::vector<Symmetry> above(std::vector<Symmetry> symmetries, double baseline, double power)
+{
+  for(Symmetry& s : symmetries) s.symmetry = std::pow(std::max(0., s.symmetry - baseline), power);
+  return symmetries;
+}
+
 std::string fixed(double x, int digits = 1)
 {
   std::ostringstream out;
@@ -172,9 +241,13 @@ try {
   std::cout << "Command: `viewpoint_experiment --meshes " << o.meshes << " --resolution " << o.resolution << "`\n\n"
             << "| mesh | planes | best view's angle to the nearest frame axis (deg) | normals within 10 deg counted once "
             << "| weights M x support | both | 3 strongest normals 10 deg apart | 3 strongest 30 deg apart | M less the "
-            << "weakest M | the same, merged | all PRST maxima | PRST candidates | M^2 | M^3 | M^4 |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+            << "weakest M | the same, merged | all PRST maxima | PRST candidates | M^2 | M^3 | M^4 "
+            << "| M less the 50 % quantile | its square | 75 % | its square | 90 % | its square "
+            << "| M x prominence over 5 deg tilts | over 30 deg tilts |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   const auto np = CGAL::parameters::grid_resolution(o.resolution).random_seed(1);
   int in_range = 0, in_range_maxima = 0, in_range_candidates = 0, count = 0, in_range_sharpened[3] = {0, 0, 0};
+  std::map<int, int> in_range_prominent, in_range_quantile;
   for(const std::string& name : benchmark_utilities::split(o.meshes)) {
     Mesh mesh;
     if(!CGAL::IO::read_polygon_mesh(benchmark_utilities::mesh_path(name), mesh) || is_empty(mesh)) {
@@ -203,6 +276,23 @@ try {
       std::cout << " | " << fixed(sharp);
       in_range_sharpened[int(power) - 2] += sharp >= 15. && sharp <= 40.;
     }
+    for(const double q : {0.5, 0.75, 0.9}) {
+      const double b = direction_quantile(d.prst, q);
+      for(const double power : {1., 2.}) {
+        const std::vector<Symmetry> p = above(d.symmetries, b, power);
+        const double a = off_axis(best_view(p), frame);
+        std::cout << " | " << fixed(a);
+        in_range_quantile[int(100 * q) * 10 + int(power)] += a >= 15. && a <= 40.;
+        if(o.diagnostics) { std::cout << " (b " << fixed(b, 2) << ": "; for(const Symmetry& x : p) std::cout << fixed(x.symmetry, 2) << " "; std::cout << ")"; }
+      }
+    }
+    for(const double degrees : {5., 30.}) {
+      const std::vector<Symmetry> p = prominent(d.symmetries, d.prst, degrees);
+      const double a = off_axis(best_view(p), frame);
+      std::cout << " | " << fixed(a);
+      in_range_prominent[int(degrees)] += a >= 15. && a <= 40.;
+      if(o.diagnostics) { std::cout << " ("; for(const Symmetry& x : p) std::cout << fixed(x.symmetry, 2) << " "; std::cout << ")"; }
+    }
     std::cout << " |\n";
     in_range_maxima += maxima >= 15. && maxima <= 40.;
     in_range_candidates += candidates >= 15. && candidates <= 40.;
@@ -214,6 +304,10 @@ try {
             << " meshes; with all PRST maxima " << in_range_maxima << ", with the PRST candidates " << in_range_candidates
             << "; with M^2, M^3, M^4 " << in_range_sharpened[0] << ", " << in_range_sharpened[1] << ", "
             << in_range_sharpened[2] << ".\n";
+  for(const auto& [q, n] : in_range_quantile)
+    std::cout << "M less the " << q / 10 << " % quantile, power " << q % 10 << ": " << n << " of " << count << "\n";
+  for(const auto& [d, n] : in_range_prominent)
+    std::cout << "M x prominence over tilts of " << d << " deg: " << n << " of " << count << "\n";
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {
