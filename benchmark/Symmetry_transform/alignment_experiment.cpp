@@ -250,12 +250,49 @@ Rule with_searched_through_mass(const STI::Frame_rule& rule)
 }
 
 // The thesis's suggested search (section 4.1.4): the three mutually orthogonal planes of the
-// whole transform that hold the most symmetry together, each at its best offset. Every direction
-// bin of the PRST (its best value over the offsets) is tried as the first normal, with
-// full_search_turns normals perpendicular to it; the chosen normals are then refined to their
-// best offsets. `variance_order`: axes by the variance of the mass; `mass_prior`: the centre as
-// the least-squares one of the three planes (weights: their values) with the centre of mass.
+// whole transform that hold the most symmetry together. Every direction bin of the PRST (scored by
+// its best value over the offsets) is tried as the first normal, with full_search_turns normals
+// perpendicular to it, the third their cross product.
 constexpr int full_search_turns = 180;
+
+// How a full-search frame is finished (RESULTS.md, seventh session).
+struct Full_search
+{
+  bool variance_order = true;  // axes by the variance of the mass, not by the planes' values
+  double mass_prior = 0.;      // > 0: the least-squares centre of the planes and the centre of mass
+  double weak_fraction = 0.;   // a plane below this fraction of the strongest goes through the centre of mass
+  bool refine = false;         // the normals turned to the largest summed interpolated value
+  enum Snap { NONE, PLANE, NORMAL } snap = NONE;  // take the nearest principal plane, or only its normal
+};
+
+// The orthonormal triple of largest summed best-over-offsets value, searched over the direction bins.
+std::array<Eigen::Vector3d, 3> best_orthogonal_normals(const Detection& d)
+{
+  const std::size_t n = d.prst.resolution();
+  std::vector<double> best(n * n, 0.);
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t k = 0; k < n; ++k) best[i * n + j] = std::max(best[i * n + j], d.prst.value(i, j, k));
+  const K::Point_3 c = d.prst.center();
+  const auto direction_value = [&](const Eigen::Vector3d& v) {
+    const auto b = d.prst.bin(K::Plane_3(c, K::Vector_3(v.x(), v.y(), v.z())));
+    return best[b[0] * n + b[1]];
+  };
+  std::pair<std::array<Eigen::Vector3d, 3>, double> top{{}, -1.};
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j) {
+      const K::Vector_3 u = d.prst.plane(i, j, n / 2).orthogonal_vector();
+      const Eigen::Vector3d n1 = Eigen::Vector3d(u.x(), u.y(), u.z()).normalized();
+      const Eigen::Vector3d e1 = n1.unitOrthogonal(), e2 = n1.cross(e1);
+      for(int t = 0; t < full_search_turns; ++t) {
+        const double a = CGAL_PI * t / full_search_turns;
+        const Eigen::Vector3d n2 = std::cos(a) * e1 + std::sin(a) * e2, n3 = n1.cross(n2);
+        const double score = best[i * n + j] + direction_value(n2) + direction_value(n3);
+        if(score > top.second) top = {{n1, n2, n3}, score};
+      }
+    }
+  return top.first;
+}
 
 // The three orthonormal normals turned, by ever smaller rotations about each of them, to the
 // largest summed value of their strongest planes in the transform (offsets searched each time).
@@ -281,76 +318,67 @@ std::array<Eigen::Vector3d, 3> refined_normals(std::array<Eigen::Vector3d, 3> no
   return normals;
 }
 
-Rule full_search(bool variance_order, double mass_prior, double weak_fraction = 0., bool refine = false,
-                 bool snap = false, bool snap_normals = false)
+// The strongest plane of each normal (or, by `options.snap`, of the nearest principal plane's
+// normal, or that plane itself), its value, and the weak ones through the centre of mass.
+std::pair<std::array<STI::Frame_plane, 3>, std::array<double, 3>>
+full_search_planes(const std::array<Eigen::Vector3d, 3>& normals, const std::vector<STI::Weighted_plane>& principal,
+                   const STI::Mass_distribution& mass, const Detection& d, const Full_search& options)
+{
+  std::array<STI::Frame_plane, 3> planes;
+  std::array<double, 3> value;
+  for(std::size_t k = 0; k < 3; ++k) {
+    const int nearest = options.snap == Full_search::NONE ? -1 : STI::strongest_principal(principal, normals[k], true, {-1, -1});
+    const Eigen::Vector3d& normal = nearest >= 0 ? principal[std::size_t(nearest)].plane.normal : normals[k];
+    const std::pair<STI::Dplane, double> p = STI::strongest_plane_of_normal(d.prst, normal);
+    planes[k] = {p.first, STI::searched_plane};
+    value[k] = p.second;
+    if(nearest >= 0 && options.snap == Full_search::PLANE) {
+      const std::pair<STI::Dplane, double> searched = STI::strongest_plane_of_normal(d.prst, normals[k]);
+      planes[k] = {principal[std::size_t(nearest)].plane, nearest};
+      value[k] = searched.second;
+    }
+  }
+  const double strongest = std::max({value[0], value[1], value[2]});
+  for(std::size_t k = 0; k < 3; ++k)
+    if(value[k] < options.weak_fraction * strongest) planes[k].plane.offset = planes[k].plane.normal.dot(mass.center());
+  return {planes, value};
+}
+
+Rule full_search(const Full_search& options)
 {
   return [=](const STI::Mass_distribution& mass, const Detection& d) {
-    const std::size_t n = d.prst.resolution();
-    std::vector<double> best(n * n, 0.);
-    for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t j = 0; j < n; ++j)
-        for(std::size_t k = 0; k < n; ++k) best[i * n + j] = std::max(best[i * n + j], d.prst.value(i, j, k));
-    const K::Point_3 c = d.prst.center();
-    const auto direction_value = [&](const Eigen::Vector3d& v) {
-      const auto b = d.prst.bin(K::Plane_3(c, K::Vector_3(v.x(), v.y(), v.z())));
-      return best[b[0] * n + b[1]];
-    };
-    std::pair<std::array<Eigen::Vector3d, 3>, double> top{{}, -1.};
-    for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t j = 0; j < n; ++j) {
-        const K::Vector_3 u = d.prst.plane(i, j, n / 2).orthogonal_vector();
-        const Eigen::Vector3d n1 = Eigen::Vector3d(u.x(), u.y(), u.z()).normalized();
-        const Eigen::Vector3d e1 = n1.unitOrthogonal(), e2 = n1.cross(e1);
-        for(int t = 0; t < full_search_turns; ++t) {
-          const double a = CGAL_PI * t / full_search_turns;
-          const Eigen::Vector3d n2 = std::cos(a) * e1 + std::sin(a) * e2, n3 = n1.cross(n2);
-          const double score = best[i * n + j] + direction_value(n2) + direction_value(n3);
-          if(score > top.second) top = {{n1, n2, n3}, score};
-        }
-      }
-    if(refine) top.first = refined_normals(top.first, d);
-    STI::Frame_choice choice;
-    std::array<double, 3> value;
-    for(int k = 0; k < 3; ++k) {
-      const std::pair<STI::Dplane, double> p = STI::strongest_plane_of_normal(d.prst, top.first[std::size_t(k)]);
-      choice.planes[std::size_t(k)] = {p.first, STI::searched_plane};
-      value[std::size_t(k)] = p.second;
-    }
+    std::array<Eigen::Vector3d, 3> normals = best_orthogonal_normals(d);
+    if(options.refine) normals = refined_normals(normals, d);
     const std::vector<STI::Weighted_plane> principal = STI::weighted_planes(d.symmetries, STI::Frame_rule{});
-    if(snap)
-      for(std::size_t k = 0; k < 3; ++k) {
-        const int nearest = STI::strongest_principal(principal, choice.planes[k].plane.normal, true, {-1, -1});
-        if(nearest >= 0) choice.planes[k] = {principal[std::size_t(nearest)].plane, nearest};
-      }
-    if(snap_normals)
-      for(std::size_t k = 0; k < 3; ++k) {
-        const int nearest = STI::strongest_principal(principal, choice.planes[k].plane.normal, true, {-1, -1});
-        if(nearest < 0) continue;
-        const std::pair<STI::Dplane, double> p = STI::strongest_plane_of_normal(d.prst, principal[std::size_t(nearest)].plane.normal);
-        choice.planes[k].plane = p.first;
-        value[k] = p.second;
-      }
-    const double strongest = std::max({value[0], value[1], value[2]});
-    for(std::size_t k = 0; k < 3; ++k)
-      if(value[k] < weak_fraction * strongest)
-        choice.planes[k].plane.offset = choice.planes[k].plane.normal.dot(mass.center());
-    std::array<int, 3> order = {0, 1, 2};
+    const auto [planes, value] = full_search_planes(normals, principal, mass, d, options);
+    std::array<std::size_t, 3> order = {0, 1, 2};
     const Eigen::Matrix3d covariance = mass.covariance();
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      const Eigen::Vector3d &na = choice.planes[std::size_t(a)].plane.normal, &nb = choice.planes[std::size_t(b)].plane.normal;
-      return variance_order ? na.dot(covariance * na) > nb.dot(covariance * nb) : value[std::size_t(a)] > value[std::size_t(b)];
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      const Eigen::Vector3d &na = planes[a].plane.normal, &nb = planes[b].plane.normal;
+      return options.variance_order ? na.dot(covariance * na) > nb.dot(covariance * nb) : value[a] > value[b];
     });
-    choice.planes = {choice.planes[std::size_t(order[0])], choice.planes[std::size_t(order[1])], choice.planes[std::size_t(order[2])]};
+    STI::Frame_choice choice;
+    choice.planes = {planes[order[0]], planes[order[1]], planes[order[2]]};
     std::array<Eigen::Vector3d, 3> axes;
     axes[0] = choice.planes[0].plane.normal;
     const Eigen::Vector3d& m = choice.planes[1].plane.normal;
     axes[1] = (m - m.dot(axes[0]) * axes[0]).normalized();
     axes[2] = axes[0].cross(axes[1]);
-    const Eigen::Vector3d center = mass_prior > 0. ? STI::least_squares_center(choice.planes, snap ? principal : std::vector<STI::Weighted_plane>{}, d.prst, mass.center(), mass_prior)
-                                                   : STI::intersection(choice.planes);
+    const std::vector<STI::Weighted_plane> parallel = options.snap == Full_search::PLANE ? principal : std::vector<STI::Weighted_plane>{};
+    const Eigen::Vector3d center = options.mass_prior > 0.
+                                     ? STI::least_squares_center(choice.planes, parallel, d.prst, mass.center(), options.mass_prior)
+                                     : STI::intersection(choice.planes);
     choice.frame = {center, STI::oriented_axes(axes, center, mass)};
     return choice;
   };
+}
+
+// A full-search rule: axes by `variance_order`, centre with `mass_prior`, and the rest of `options`.
+Rule full_search(bool variance_order, double mass_prior, Full_search options = {})
+{
+  options.variance_order = variance_order;
+  options.mass_prior = mass_prior;
+  return full_search(options);
 }
 
 std::map<std::string, Rule> rules()
@@ -399,27 +427,27 @@ std::map<std::string, Rule> rules()
           {"full_var", full_search(true, 0.)},
           {"full_var_prior", full_search(true, 0.2)},
           {"full_prior", full_search(false, 0.2)},
-          {"full_var_refined", full_search(true, 0., 0., true)},
-          {"full_var_prior_refined", full_search(true, 0.2, 0., true)},
-          {"full_var_snap", full_search(true, 0., 0., false, true)},
-          {"full_var_prior_snap", full_search(true, 0.2, 0., false, true)},
-          {"full_var_refined_snap", full_search(true, 0., 0., true, true)},
-          {"full_var_prior_refined_snap", full_search(true, 0.2, 0., true, true)},
-          {"full_var_nsnap", full_search(true, 0., 0., false, false, true)},
-          {"full_var_prior_nsnap", full_search(true, 0.2, 0., false, false, true)},
-          {"full_var_refined_nsnap", full_search(true, 0., 0., true, false, true)},
-          {"full_var_prior_refined_nsnap", full_search(true, 0.2, 0., true, false, true)},
-          {"full_var_prior1_nsnap", full_search(true, 0.1, 0., false, false, true)},
-          {"full_var_prior3_nsnap", full_search(true, 0.3, 0., false, false, true)},
-          {"full_var_prior10_nsnap", full_search(true, 1.0, 0., false, false, true)},
-          {"full_var_prior35_nsnap", full_search(true, 0.35, 0., false, false, true)},
-          {"full_var_prior4_nsnap", full_search(true, 0.4, 0., false, false, true)},
-          {"full_var_prior5_nsnap", full_search(true, 0.5, 0., false, false, true)},
-          {"full_var_prior45_nsnap", full_search(true, 0.45, 0., false, false, true)},
-          {"full_var_weak6", full_search(true, 0., 0.6)},
-          {"full_var_weak7", full_search(true, 0., 0.7)},
-          {"full_var_weak8", full_search(true, 0., 0.8)},
-          {"full_var_weak9", full_search(true, 0., 0.9)}};
+          {"full_var_refined", full_search(true, 0., {true, 0., 0., true, Full_search::NONE})},
+          {"full_var_prior_refined", full_search(true, 0.2, {true, 0., 0., true, Full_search::NONE})},
+          {"full_var_snap", full_search(true, 0., {true, 0., 0., false, Full_search::PLANE})},
+          {"full_var_prior_snap", full_search(true, 0.2, {true, 0., 0., false, Full_search::PLANE})},
+          {"full_var_refined_snap", full_search(true, 0., {true, 0., 0., true, Full_search::PLANE})},
+          {"full_var_prior_refined_snap", full_search(true, 0.2, {true, 0., 0., true, Full_search::PLANE})},
+          {"full_var_nsnap", full_search(true, 0., {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_prior_nsnap", full_search(true, 0.2, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_refined_nsnap", full_search(true, 0., {true, 0., 0., true, Full_search::NORMAL})},
+          {"full_var_prior_refined_nsnap", full_search(true, 0.2, {true, 0., 0., true, Full_search::NORMAL})},
+          {"full_var_prior1_nsnap", full_search(true, 0.1, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_prior3_nsnap", full_search(true, 0.3, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_prior10_nsnap", full_search(true, 1.0, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_prior35_nsnap", full_search(true, 0.35, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_prior4_nsnap", full_search(true, 0.4, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_prior5_nsnap", full_search(true, 0.5, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_prior45_nsnap", full_search(true, 0.45, {true, 0., 0., false, Full_search::NORMAL})},
+          {"full_var_weak6", full_search(true, 0., {true, 0., 0.6, false, Full_search::NONE})},
+          {"full_var_weak7", full_search(true, 0., {true, 0., 0.7, false, Full_search::NONE})},
+          {"full_var_weak8", full_search(true, 0., {true, 0., 0.8, false, Full_search::NONE})},
+          {"full_var_weak9", full_search(true, 0., {true, 0., 0.9, false, Full_search::NONE})}};
 }
 
 // What a rule (or PCA) gave over all scans of a set.
