@@ -250,10 +250,7 @@ Rule with_searched_through_mass(const STI::Frame_rule& rule)
 }
 
 // The thesis's suggested search (section 4.1.4): the three mutually orthogonal planes of the
-// whole transform that hold the most symmetry together. Every direction bin of the PRST (scored by
-// its best value over the offsets) is tried as the first normal, with full_search_turns normals
-// perpendicular to it, the third their cross product.
-constexpr int full_search_turns = 180;
+// whole transform that hold the most symmetry together (internal/alignment/orthogonal_planes.h).
 
 // How a full-search frame is finished (RESULTS.md, seventh session).
 struct Full_search
@@ -262,36 +259,25 @@ struct Full_search
   double mass_prior = 0.;      // > 0: the least-squares centre of the planes and the centre of mass
   double weak_fraction = 0.;   // a plane below this fraction of the strongest goes through the centre of mass
   bool refine = false;         // the normals turned to the largest summed interpolated value
-  enum Snap { NONE, PLANE, NORMAL } snap = NONE;  // take the nearest principal plane, or only its normal
+  enum Snap { NONE, PLANE, NORMAL, PRINCIPAL } snap = NONE;  // take the nearest principal plane, or only its
+                                                            // normal, or the plane weighing its value
+  bool excess_weight = false;  // a plane weighs 2 v - 1 in the centre (v: its value; 1/2 is the value of no symmetry)
 };
 
-// The orthonormal triple of largest summed best-over-offsets value, searched over the direction bins.
-std::array<Eigen::Vector3d, 3> best_orthogonal_normals(const Detection& d)
+// The point c minimising sum_p (2 v_p - 1)^+ (n_p . c - d_p)^2 + prior (n_p . (c - m))^2 over the
+// three planes p (v_p their values, m the centre of mass).
+Eigen::Vector3d excess_weighted_center(const std::array<STI::Frame_plane, 3>& planes, const std::array<double, 3>& value,
+                                       const Eigen::Vector3d& mass_center, double prior)
 {
-  const std::size_t n = d.prst.resolution();
-  std::vector<double> best(n * n, 0.);
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t j = 0; j < n; ++j)
-      for(std::size_t k = 0; k < n; ++k) best[i * n + j] = std::max(best[i * n + j], d.prst.value(i, j, k));
-  const K::Point_3 c = d.prst.center();
-  const auto direction_value = [&](const Eigen::Vector3d& v) {
-    const auto b = d.prst.bin(K::Plane_3(c, K::Vector_3(v.x(), v.y(), v.z())));
-    return best[b[0] * n + b[1]];
-  };
-  std::pair<std::array<Eigen::Vector3d, 3>, double> top{{}, -1.};
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t j = 0; j < n; ++j) {
-      const K::Vector_3 u = d.prst.plane(i, j, n / 2).orthogonal_vector();
-      const Eigen::Vector3d n1 = Eigen::Vector3d(u.x(), u.y(), u.z()).normalized();
-      const Eigen::Vector3d e1 = n1.unitOrthogonal(), e2 = n1.cross(e1);
-      for(int t = 0; t < full_search_turns; ++t) {
-        const double a = CGAL_PI * t / full_search_turns;
-        const Eigen::Vector3d n2 = std::cos(a) * e1 + std::sin(a) * e2, n3 = n1.cross(n2);
-        const double score = best[i * n + j] + direction_value(n2) + direction_value(n3);
-        if(score > top.second) top = {{n1, n2, n3}, score};
-      }
-    }
-  return top.first;
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for(std::size_t k = 0; k < 3; ++k) {
+    const Eigen::Vector3d& n = planes[k].plane.normal;
+    const double w = std::max(0., 2. * value[k] - 1.);
+    a += (w + prior) * n * n.transpose();
+    b += (w * planes[k].plane.offset + prior * n.dot(mass_center)) * n;
+  }
+  return a.ldlt().solve(b);
 }
 
 // The three orthonormal normals turned, by ever smaller rotations about each of them, to the
@@ -332,6 +318,7 @@ full_search_planes(const std::array<Eigen::Vector3d, 3>& normals, const std::vec
     const std::pair<STI::Dplane, double> p = STI::strongest_plane_of_normal(d.prst, normal);
     planes[k] = {p.first, STI::searched_plane};
     value[k] = p.second;
+    if(nearest >= 0 && options.snap == Full_search::PRINCIPAL) planes[k].plane = principal[std::size_t(nearest)].plane;
     if(nearest >= 0 && options.snap == Full_search::PLANE) {
       const std::pair<STI::Dplane, double> searched = STI::strongest_plane_of_normal(d.prst, normals[k]);
       planes[k] = {principal[std::size_t(nearest)].plane, nearest};
@@ -347,7 +334,7 @@ full_search_planes(const std::array<Eigen::Vector3d, 3>& normals, const std::vec
 Rule full_search(const Full_search& options)
 {
   return [=](const STI::Mass_distribution& mass, const Detection& d) {
-    std::array<Eigen::Vector3d, 3> normals = best_orthogonal_normals(d);
+    std::array<Eigen::Vector3d, 3> normals = STI::most_symmetric_orthogonal_normals(d.prst);
     if(options.refine) normals = refined_normals(normals, d);
     const std::vector<STI::Weighted_plane> principal = STI::weighted_planes(d.symmetries, STI::Frame_rule{});
     const auto [planes, value] = full_search_planes(normals, principal, mass, d, options);
@@ -365,7 +352,9 @@ Rule full_search(const Full_search& options)
     axes[1] = (m - m.dot(axes[0]) * axes[0]).normalized();
     axes[2] = axes[0].cross(axes[1]);
     const std::vector<STI::Weighted_plane> parallel = options.snap == Full_search::PLANE ? principal : std::vector<STI::Weighted_plane>{};
-    const Eigen::Vector3d center = options.mass_prior > 0.
+    const std::array<double, 3> ordered_value = {value[order[0]], value[order[1]], value[order[2]]};
+    const Eigen::Vector3d center = options.excess_weight ? excess_weighted_center(choice.planes, ordered_value, mass.center(), options.mass_prior)
+                                   : options.mass_prior > 0.
                                      ? STI::least_squares_center(choice.planes, parallel, d.prst, mass.center(), options.mass_prior)
                                      : STI::intersection(choice.planes);
     choice.frame = {center, STI::oriented_axes(axes, center, mass)};
@@ -379,6 +368,29 @@ Rule full_search(bool variance_order, double mass_prior, Full_search options = {
   options.variance_order = variance_order;
   options.mass_prior = mass_prior;
   return full_search(options);
+}
+
+// The library's rule for partial data until the eighth session (symmetry_frame(..., partial_data(true))
+// took these axes and this centre).
+const STI::Frame_rule joint_var_prior_inertia{true, false, true, false, false, 1, 0.2, 1., false};
+
+// symmetry_frame(..., partial_data(true)): the axes of the joint rule, the centre of the
+// orthogonal planes (the planes listed are those of its axes).
+const Rule partial_data_rule = [](const STI::Mass_distribution& mass, const Detection& d) {
+  STI::Frame_choice choice = STI::frame_choice(mass, d.symmetries, d.prst, STI::partial_data_rule);
+  choice.frame = STI::partial_data_frame(mass, d.symmetries, d.prst);
+  return choice;
+};
+
+// The axes of `axes_rule` (oriented again about the new centre) with the centre of `center_rule`.
+Rule axes_and_center(const Rule& axes_rule, const Rule& center_rule)
+{
+  return [=](const STI::Mass_distribution& mass, const Detection& d) {
+    STI::Frame_choice choice = axes_rule(mass, d);
+    const Eigen::Vector3d center = center_rule(mass, d).frame.center;
+    choice.frame = {center, STI::oriented_axes(choice.frame.axes, center, mass)};
+    return choice;
+  };
 }
 
 std::map<std::string, Rule> rules()
@@ -410,7 +422,8 @@ std::map<std::string, Rule> rules()
           {"joint_var", rule_of(true, false, false, false, false, 1)},
           {"joint_var_inertia", rule_of(true, false, false, false, false, 1, 0., 1.)},
           {"joint_var_inertia8", rule_of(true, false, false, false, false, 1, 0., 0.8)},
-          {"joint_var_prior_inertia", rule_of(STI::partial_data_rule)}, // symmetry_frame(..., partial_data(true))
+          {"joint_var_prior_inertia", rule_of(joint_var_prior_inertia)},
+          {"partial_data", partial_data_rule}, // symmetry_frame(..., partial_data(true))
           {"joint_var_weak_prior_inertia", rule_of(true, false, true, false, false, 1, 0.2, 1., true)},
           {"joint_var_weak_prior_inertia95", rule_of(true, false, true, false, false, 1, 0.2, 0.95, true)},
           {"joint_var_weak_prior_inertia9", rule_of(true, false, true, false, false, 1, 0.2, 0.9, true)},
@@ -421,7 +434,7 @@ std::map<std::string, Rule> rules()
           {"joint_mass", with_searched_through_mass({true, false, false, false, false, 0, 0., 0., false})},
           {"joint_var_mass", with_searched_through_mass({true, false, false, false, false, 1, 0., 0., false})},
           {"joint_var_inertia_mass", with_searched_through_mass({true, false, false, false, false, 1, 0., 1., false})},
-          {"joint_var_prior_inertia_mass", with_searched_through_mass(STI::partial_data_rule)},
+          {"joint_var_prior_inertia_mass", with_searched_through_mass(joint_var_prior_inertia)},
           {"greedy_ls_var_prior_inertia", rule_of(false, false, true, false, false, 1, 0.2, 1.)},
           {"full", full_search(false, 0.)},
           {"full_var", full_search(true, 0.)},
@@ -447,7 +460,15 @@ std::map<std::string, Rule> rules()
           {"full_var_weak6", full_search(true, 0., {true, 0., 0.6, false, Full_search::NONE})},
           {"full_var_weak7", full_search(true, 0., {true, 0., 0.7, false, Full_search::NONE})},
           {"full_var_weak8", full_search(true, 0., {true, 0., 0.8, false, Full_search::NONE})},
-          {"full_var_weak9", full_search(true, 0., {true, 0., 0.9, false, Full_search::NONE})}};
+          {"full_var_weak9", full_search(true, 0., {true, 0., 0.9, false, Full_search::NONE})},
+          {"full_var_prior4_psnap", full_search(true, 0.4, {true, 0., 0., false, Full_search::PRINCIPAL})},
+          {"full_var_prior3_psnap", full_search(true, 0.3, {true, 0., 0., false, Full_search::PRINCIPAL})},
+          {"full_var_excess1_nsnap", full_search(true, 0.1, {true, 0., 0., false, Full_search::NORMAL, true})},
+          {"full_var_excess2_nsnap", full_search(true, 0.2, {true, 0., 0., false, Full_search::NORMAL, true})},
+          {"full_var_excess05_nsnap", full_search(true, 0.05, {true, 0., 0., false, Full_search::NORMAL, true})},
+          {"joint_axes_full_center3", axes_and_center(rule_of(joint_var_prior_inertia), full_search(true, 0.3, {true, 0., 0., false, Full_search::NORMAL}))},
+          {"joint_axes_full_center4", axes_and_center(rule_of(joint_var_prior_inertia), full_search(true, 0.4, {true, 0., 0., false, Full_search::NORMAL}))},
+          {"joint_axes_full_center5", axes_and_center(rule_of(joint_var_prior_inertia), full_search(true, 0.5, {true, 0., 0., false, Full_search::NORMAL}))}};
 }
 
 // What a rule (or PCA) gave over all scans of a set.

@@ -17,6 +17,7 @@
 
 #include "Symmetry_transform_test_shapes.h"
 
+#include <CGAL/centroid.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
@@ -257,6 +258,38 @@ TEST(SymmetryFrame, PartialDataOrdersTheAxesOfABoxByVariance)
     const std::array<Vector_3, 3> truth = moved_axes(m);
     for(int i = 0; i < 3; ++i) EXPECT_LE(degrees_between_lines(f.axes[i], truth[i]), 0.5) << "axis " << i << ", " << what;
     EXPECT_LE(std::sqrt(CGAL::squared_distance(f.center, *s.center)) / cr.radius, 0.005) << what;
+  }
+}
+
+// A partial scan: points on the box of sides 2, 1.4 and 0.9 with the corner x > 0, y > 0 cut
+// away (a quarter of the surface), under random similarities. The plane z = 0 survives whole:
+// with partial_data(true) one axis is its normal (1 degree) and the centre lies on it (0.5 % R).
+// The other planes survive in part; the centre (the most symmetric orthogonal planes, pulled
+// toward the centre of mass) must lie at most 3/4 as far from the box's centre as the centre of
+// mass of the points (measured: 0.57 and 0.66).
+TEST(SymmetryFrame, PartialDataCentreOfABoxWithACornerCutAwayStaysNearTheBoxCentre)
+{
+  CGAL::Random rng(310);
+  const Shape<Surface_mesh> whole = box<Surface_mesh>();
+  const double radius = center_and_radius(whole.mesh).radius;
+  for(int trial = 0; trial < 2; ++trial) {
+    const Motion m = random_motion(rng);
+    const double scale = std::sqrt(m.transform(Vector_3(1, 0, 0)).squared_length());
+    std::vector<Point_3> points;
+    for(const Point_3& p : surface_points(whole.mesh, 8000, rng))
+      if(p.x() <= 0. || p.y() <= 0.) points.push_back(m.transform(p));
+    const Point_3 box_center = m.transform(CGAL::ORIGIN), mass_center = CGAL::centroid(points.begin(), points.end());
+    const Frame f = ST::symmetry_frame_of_points(points, grid_32.partial_data(true));
+    const double symmetry_error = std::sqrt(CGAL::squared_distance(f.center, box_center)),
+                 mass_error = std::sqrt(CGAL::squared_distance(mass_center, box_center));
+    const Plane_3 surviving = moved(Plane_3(0, 0, 1, 0), m);
+    const std::string what = "motion " + std::to_string(trial) + ": " + describe(f);
+    std::cout << "box with a corner cut away, " << what << ": centre of symmetry " << symmetry_error / mass_error
+              << " times as far from the box's centre as the centre of mass\n";
+    EXPECT_TRUE(is_orthonormal_right_handed(f)) << what;
+    EXPECT_LE(degrees_between_lines(nearest_axis(f, unit_normal(surviving)), unit_normal(surviving)), 1.) << what;
+    EXPECT_LE(std::sqrt(CGAL::squared_distance(f.center, surviving)) / (scale * radius), 0.005) << what;
+    EXPECT_LE(symmetry_error, 0.75 * mass_error) << what;
   }
 }
 

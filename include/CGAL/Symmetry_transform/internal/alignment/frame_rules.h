@@ -117,6 +117,30 @@ std::pair<Dplane, double> strongest_plane_of_normal(const Reflective_symmetry_tr
   return best;
 }
 
+// The strongest plane of the transform with unit normal `normal`, its offset moved to the
+// vertex of the parabola through the values at the nearest bin centre and the two beside it:
+// the values are samples at the bin centres and their interpolation peaks there, up to half a
+// bin (R / n) off a plane that lies between two centres.
+template <typename GT>
+Dplane peak_plane_of_normal(const Reflective_symmetry_transform<GT>& prst, const Eigen::Vector3d& normal)
+{
+  const Dplane strongest = strongest_plane_of_normal(prst, normal).first;
+  const Plane_bins& bins = prst.bins();
+  const double width = bins.offset_step(),
+               normal_dot_center = normal.dot(Eigen::Vector3d(bins.center[0], bins.center[1], bins.center[2]));
+  const double r = bins.offset(std::size_t(std::clamp(std::round((strongest.offset - normal_dot_center + bins.radius) / width - 0.5),
+                                                      0., double(bins.n - 1))));
+  if(std::abs(r) + width > offset_search_extent * bins.radius) return strongest;
+  const auto value_at = [&](double offset) {
+    return prst.value(typename GT::Plane_3(normal.x(), normal.y(), normal.z(), -(normal_dot_center + offset)));
+  };
+  const double below = value_at(r - width), at = value_at(r), above = value_at(r + width);
+  const double curvature = 2. * at - below - above;
+  if(curvature <= 0.) return strongest;
+  const double shift = std::clamp((above - below) / (2. * curvature), -0.5, 0.5);
+  return {normal, normal_dot_center + r + shift * width};
+}
+
 // The strongest plane of the transform among those perpendicular to the unit vector `axis`
 // (the thesis's search for the second axis): perpendicular_normal_steps normals over half a turn.
 template <typename GT>
