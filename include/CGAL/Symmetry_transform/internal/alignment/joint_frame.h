@@ -60,13 +60,13 @@ struct Frame_rule
 // scans, 0.5 falls below 1.5 times on the man-made set (RESULTS.md, issue 15).
 constexpr double partial_data_mass_prior = 0.4;
 
-// The axes of symmetry_frame() with partial_data(true): the three planes chosen jointly, the axes
-// ordered by variance, the second and third from inertia within the strongest plane wherever the
-// second plane is weaker than the first (the centre: partial_data_center()).
 // A principal plane of at least this measure maps the surface onto itself: its refined offset
 // is exact, where the transform's peak is known to a fraction of a bin.
 constexpr double exact_symmetry = 0.98;
 
+// The axes of symmetry_frame() with partial_data(true): the three planes chosen jointly, the axes
+// ordered by variance, the second and third from inertia within the strongest plane wherever the
+// second plane is weaker than the first (the centre: partial_data_center()).
 constexpr Frame_rule partial_data_rule{true, false, false, false, false, 1, 0., 1., false};
 
 // Principal planes whose measures differ by at most this are taken as equally strong (variance_order 2).
@@ -323,7 +323,9 @@ Frame_choice frame_choice(const Mass_distribution& mass, const std::vector<Princ
 // partial_data_mass_prior along each of their normals). Each normal is replaced by that of the
 // strongest principal plane within center_plane_tolerance_degrees of it, and its offset searched
 // again to a fraction of a bin: the search's normals lie up to a bin off the true ones, the
-// principal planes' are refined.
+// principal planes' are refined. An exact principal plane (exact_symmetry) within a bin of that
+// offset keeps its own. Other principal planes keep only their normals: on partial scans their
+// refined offsets, drawn to the visible part, measured worse than the transform's peak.
 template <typename GT>
 Eigen::Vector3d partial_data_center(const Mass_distribution& mass, const std::vector<Principal_symmetry<GT>>& symmetries,
                                     const Reflective_symmetry_transform<GT>& prst)
