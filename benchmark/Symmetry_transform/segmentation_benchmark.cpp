@@ -25,10 +25,13 @@
 //
 // usage: segmentation_benchmark --data DIR --cache DIR [--output DIR] [--count ByModel]
 //          [--models 1-20,41] [--resolution N] [--jobs J] [--no-human] [--no-sdf]
-//          [--partial-symmetry-fraction P] [--smallest-part-fraction Q] [--variant NAME] [--ply DIR]
+//          [--partial-symmetry-fraction P] [--smallest-part-fraction Q] [--sdf-feature] [--variant NAME]
+//          [--ply DIR]
 //   --data: the benchmark's folder, with off/, seg/Benchmark/ and parameters/ (RESULTS.md)
 //   --partial-symmetry-fraction, --smallest-part-fraction: segment_by_symmetry's named parameters
 //              of the same names (default: the library's, 0.1 and 0.05)
+//   --sdf-feature: segment_by_symmetry clusters CGAL's shape diameter function (sdf_values) with
+//              the planes' supports (named parameter face_feature_map); its time counts
 //   --variant: a name for the library's segment_by_symmetry as built (a prototype, say): its
 //              segmentations get their own cache folder
 //   --ply: also writes every segmentation of the models run as a PLY file coloured by segment
@@ -89,6 +92,7 @@ struct Options
   std::string variant;     // a name for a variant of segment_by_symmetry (its own cache folder)
   double partial_fraction = -1., part_fraction = -1.; // segment_by_symmetry's, if >= 0
   bool run_sdf = true;     // false: segment_by_symmetry only (the SDF rows are left empty)
+  bool sdf_feature = false; // segment_by_symmetry gets CGAL's SDF values as its face_feature_map
   std::vector<int> models;
   int resolution = 32; // segment_by_symmetry's default
   unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
@@ -116,6 +120,7 @@ Options parse(int argc, char** argv)
     const std::string arg = argv[a];
     if(arg == "--no-human") { o.human = false; continue; }
     if(arg == "--no-sdf") { o.run_sdf = false; continue; }
+    if(arg == "--sdf-feature") { o.sdf_feature = true; continue; }
     if(a + 1 == argc) throw std::invalid_argument(arg + " expects a value");
     const std::string value = argv[++a];
     if(arg == "--data") o.data = value;
@@ -238,16 +243,19 @@ Segmentation segment_by_symmetry(const Options& o, Benchmark_mesh& m, std::size_
   auto segment = m.mesh.add_property_map<Mesh::Face_index, std::size_t>("f:symmetry", 0).first;
   const std::size_t depth = std::size_t(std::ceil(std::log2(double(std::max<std::size_t>(k, 2))))) + 1;
   ST::Segmentation_tree<K> tree;
+  // The library's defaults where the options are not given (the same results as leaving them out).
+  const double p = o.partial_fraction >= 0. ? o.partial_fraction : ST::internal::defaults::partial_symmetry_fraction;
+  const double q = o.part_fraction >= 0. ? o.part_fraction : ST::internal::defaults::smallest_part_fraction;
   const auto np = CGAL::parameters::grid_resolution(o.resolution).number_of_threads(1u).max_number_of_segments(k)
-                    .max_segmentation_depth(depth).segmentation_tree(std::ref(tree));
+                    .max_segmentation_depth(depth).segmentation_tree(std::ref(tree))
+                    .partial_symmetry_fraction(p).smallest_part_fraction(q);
   const auto start = std::chrono::steady_clock::now();
-  if(o.partial_fraction >= 0. && o.part_fraction >= 0.)
-    ST::segment_by_symmetry(m.mesh, segment, np.partial_symmetry_fraction(o.partial_fraction).smallest_part_fraction(o.part_fraction));
-  else if(o.partial_fraction >= 0.)
-    ST::segment_by_symmetry(m.mesh, segment, np.partial_symmetry_fraction(o.partial_fraction));
-  else if(o.part_fraction >= 0.)
-    ST::segment_by_symmetry(m.mesh, segment, np.smallest_part_fraction(o.part_fraction));
-  else
+  if(o.sdf_feature) { // the SDF values' time counts
+    auto sdf = m.mesh.add_property_map<Mesh::Face_index, double>("f:sdf_feature", 0.).first;
+    CGAL::sdf_values(m.mesh, sdf);
+    ST::segment_by_symmetry(m.mesh, segment, np.face_feature_map(sdf));
+    m.mesh.remove_property_map(sdf);
+  } else
     ST::segment_by_symmetry(m.mesh, segment, np);
   Segmentation s{labels_of(m.mesh, segment), seconds_since(start), leaf_statuses(tree)};
   m.mesh.remove_property_map(segment);
@@ -281,6 +289,7 @@ fs::path cache_folder(const Options& o, std::size_t method)
   symmetry << "symmetry-" << o.count << "-n" << o.resolution;
   if(o.partial_fraction >= 0.) symmetry << "-p" << o.partial_fraction;
   if(o.part_fraction >= 0.) symmetry << "-q" << o.part_fraction;
+  if(o.sdf_feature) symmetry << "-sdf";
   if(!o.variant.empty()) symmetry << "-" << o.variant;
   const std::string name[] = {"", symmetry.str(), "sdf-" + o.count, "sdf-5"};
   return o.cache / name[method];

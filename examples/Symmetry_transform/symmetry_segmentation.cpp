@@ -5,10 +5,13 @@
 // Segments a mesh into parts that follow its symmetric components (hierarchical splits by the
 // supports of each segment's principal planes), prints the segmentation tree, and writes the
 // mesh with its faces coloured by segment. With --sdf, also runs CGAL's SDF segmentation
-// (CGAL::segmentation_via_sdf_values, default parameters) on the same mesh, for comparison.
+// (CGAL::segmentation_via_sdf_values, default parameters) on the same mesh, for comparison. With
+// --thickness, the shape diameter function (CGAL::sdf_values) is clustered with the planes'
+// supports (named parameter face_feature_map): parts end where the thickness changes.
 //
 // usage: symmetry_segmentation [mesh.off|.ply|.obj|.stl] [--resolution N] [--depth D]
-//          [--segments M] [--planes K] [--lambda L] [--seed S] [--output FILE.ply] [--sdf] [--verbose]
+//          [--segments M] [--planes K] [--lambda L] [--seed S] [--output FILE.ply] [--sdf]
+//          [--thickness] [--verbose]
 // writes FILE.ply (default symmetry_segmentation.ply) and, with --sdf, FILE_sdf.ply
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -75,13 +78,13 @@ void compare_with_sdf_segmentation(Mesh& mesh, const std::string& prefix)
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv, {"--sdf", "--verbose"});
+  const examples::Command_line_options options(argc, argv, {"--sdf", "--thickness", "--verbose"});
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 32), depth = options.integer("--depth", 3, 0),
                     segments = options.integer("--segments", ST::Symmetry_segment<K>::none),
                     planes = options.integer("--planes", 6), seed = options.integer("--seed", 0, 0);
   const double lambda = options.real("--lambda", 1.);
-  const bool sdf = options.flag("--sdf"), verbose = options.flag("--verbose");
+  const bool sdf = options.flag("--sdf"), thickness = options.flag("--thickness"), verbose = options.flag("--verbose");
   const std::string prefix = examples::without_ply_extension(options.text("--output", "symmetry_segmentation.ply"));
   options.reject_unknown();
   Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
@@ -90,7 +93,7 @@ try {
   Segment_map segment = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:segment", 0).first;
   CGAL::Real_timer timer;
   timer.start();
-  const std::size_t count = ST::segment_by_symmetry(mesh, segment,
+  const auto np =
     CGAL::parameters::grid_resolution(int(resolution)). // of each segment's detection
                       max_segmentation_depth(depth).    // levels of splits
                       max_number_of_segments(segments). // no split beyond this count
@@ -99,7 +102,14 @@ try {
                       random_seed(unsigned(seed)).      // the same seed, the same segments
                       verbose(verbose).                 // prints each split
                       callback(examples::progress_bar("Segmentation")). // a progress bar on a terminal
-                      segmentation_tree(std::ref(tree))); // receives the tree of splits
+                      segmentation_tree(std::ref(tree)); // receives the tree of splits
+  std::size_t count = 0;
+  if(thickness) { // the shape diameter function as one more feature of every face
+    auto diameter = mesh.add_property_map<Mesh::Face_index, double>("f:diameter", 0.).first;
+    CGAL::sdf_values(mesh, diameter);
+    count = ST::segment_by_symmetry(mesh, segment, np.face_feature_map(diameter));
+  } else
+    count = ST::segment_by_symmetry(mesh, segment, np);
   std::cout << std::setprecision(3) << count << " segments (depth <= " << depth << ", grid " << resolution << "^3) in "
             << timer.time() << " s\nSegmentation tree (each segment: its faces, area, what became of it, and the\n"
             << "fraction of its area that each of its principal planes reflects):\n";

@@ -35,6 +35,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -517,6 +518,34 @@ TEST(SymmetrySegmentation, SmallestPartFractionMergesTheParts)
   table_left_whole(grid_32.max_segmentation_depth(1).smallest_part_fraction(0.6), ST::Segment_status::NOT_SEPARABLE);
 }
 
+// A face feature that tells the parts apart (here the parts themselves, 0 on the slab and 1 on
+// the legs, as a thickness would) moves the boundary onto the slab's edge: without it, a patch of
+// the slab's underside around each leg goes with the leg (95.8 % labelled correctly, test above).
+TEST(SymmetrySegmentation, FaceFeatureMovesTheBoundaryToWhereTheFeatureChanges)
+{
+  const Composite s = table();
+  const std::vector<std::size_t> parts = true_parts(s);
+  std::vector<double> leg(parts.size());
+  for(std::size_t f = 0; f < parts.size(); ++f) leg[f] = parts[f] == 0 ? 0. : 1.;
+  const Result r = segmentation(s.mesh, grid_32.max_segmentation_depth(1).face_feature_map(CGAL::make_property_map(leg)));
+  expect_valid(s.mesh, r);
+  ASSERT_EQ(r.count, s.parts.size()) << describe(r);
+  const double fraction = best_matching_fraction(r.segment, r.count, parts, s.parts.size(), face_areas(s.mesh));
+  std::cout << "table with the parts as a face feature: " << 100. * fraction << " % labelled correctly\n";
+  EXPECT_GE(fraction, 0.99);
+}
+
+// A feature constant over the mesh adds nothing: the same segments as without it, face by face.
+TEST(SymmetrySegmentation, ConstantFaceFeatureChangesNothing)
+{
+  const Composite s = table();
+  const std::vector<double> constant(num_faces(s.mesh), 2.5);
+  const Result plain = segmentation(s.mesh, grid_32.max_segmentation_depth(1));
+  const Result with = segmentation(s.mesh, grid_32.max_segmentation_depth(1).face_feature_map(CGAL::make_property_map(constant)));
+  EXPECT_EQ(plain.count, with.count);
+  EXPECT_TRUE(plain.segment == with.segment);
+}
+
 TEST(SymmetrySegmentation, SameSeedGivesTheSameSegmentation)
 {
   const Composite s = box_beside_ellipsoid();
@@ -611,6 +640,19 @@ TEST(SymmetrySegmentationBadInput, BadParametersAreRejected)
   EXPECT_TRUE(throws_with_message<std::invalid_argument>(
     [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.grid_resolution(4)); },
     "grid_resolution"));
+}
+
+TEST(SymmetrySegmentationBadInput, NonFiniteFaceFeatureIsRejected)
+{
+  const Surface_mesh mesh = box<Surface_mesh>().mesh;
+  std::vector<std::size_t> ids(num_faces(mesh));
+  for(double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    std::vector<double> feature(num_faces(mesh), 1.);
+    feature[3] = bad;
+    EXPECT_TRUE(throws_with_message<std::invalid_argument>(
+      [&] { ST::segment_by_symmetry(mesh, CGAL::make_property_map(ids), grid_32.face_feature_map(CGAL::make_property_map(feature))); },
+      "face_feature_map"));
+  }
 }
 
 TEST(SymmetrySegmentationBadInput, FractionsOutOfRangeAreRejected)

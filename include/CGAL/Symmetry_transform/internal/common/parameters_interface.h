@@ -29,6 +29,7 @@ CGAL_add_named_parameter(st_smoothing_lambda_t, st_smoothing_lambda, smoothing_l
 CGAL_add_named_parameter(st_segmentation_tree_t, st_segmentation_tree, segmentation_tree)
 CGAL_add_named_parameter(st_partial_symmetry_fraction_t, st_partial_symmetry_fraction, partial_symmetry_fraction)
 CGAL_add_named_parameter(st_smallest_part_fraction_t, st_smallest_part_fraction, smallest_part_fraction)
+CGAL_add_named_parameter(st_face_feature_map_t, st_face_feature_map, face_feature_map)
 // end of segmentation
 
 // Alignment (symmetry_alignment.h)

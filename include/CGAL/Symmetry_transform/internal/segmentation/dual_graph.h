@@ -69,6 +69,7 @@ struct Segmentation_mesh
   std::vector<double> areas;
   std::vector<Dual_edge> edges;
   std::vector<Face_dual_edges> face_edges; // the dual edges of each face
+  std::vector<double> face_features; // the user's feature of each face (face_feature.h), or empty
 
   std::size_t number_of_faces() const { return triangles.size(); }
 };

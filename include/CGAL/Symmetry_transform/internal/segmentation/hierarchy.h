@@ -13,6 +13,7 @@
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/face_feature.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/settings.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/split.h>
 
@@ -182,15 +183,17 @@ private:
 };
 
 // The segmentation of `tm`, its faces numbered 0 to n - 1 by `face_index`: writes the segment
-// ids, moves the tree into `segments` and returns the number of segments.
+// ids, moves the tree into `segments` and returns the number of segments. `np`: for the
+// face_feature_map.
 template <typename GT, typename Segment, typename TriangleMesh, typename VertexPointMap, typename FaceIndexMap,
-          typename SegmentIdMap>
+          typename SegmentIdMap, typename NamedParameters>
 std::size_t segment_mesh(const TriangleMesh& tm, const VertexPointMap& vpm, const FaceIndexMap& face_index,
                          SegmentIdMap segment_id_map, const Segmentation_settings& settings,
-                         std::vector<Segment>& segments)
+                         std::vector<Segment>& segments, const NamedParameters& np)
 {
   Progress_stage stage(0., progress_shares::segmentation_preparation);
-  const Segmentation_mesh mesh = segmentation_mesh(tm, vpm, face_index);
+  Segmentation_mesh mesh = segmentation_mesh(tm, vpm, face_index);
+  mesh.face_features = face_feature_values(tm, face_index, np);
   Segmentation_hierarchy<GT, Segment> hierarchy(mesh, settings);
   stage.move_to(progress_shares::segmentation_preparation, 1.);
   hierarchy.grow();

@@ -16,6 +16,7 @@
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
 #include <CGAL/Symmetry_transform/internal/detection/face_support.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
+#include <CGAL/Symmetry_transform/internal/segmentation/face_feature.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/fuzzy_clustering.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/settings.h>
 
@@ -148,7 +149,7 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
   record_reflected_fractions(features, areas, area, settings.partial_symmetry_fraction, split);
   split.feature_seconds = since_start() - split.detection_seconds;
   if(split.partial_symmetry) {
-    split.parts = parts_of_clustering(mesh, faces, features, areas, area, settings);
+    split.parts = parts_of_clustering(mesh, faces, with_face_feature(features, mesh.face_features, faces), areas, area, settings);
     if(split.parts.size() < 2) split.parts.clear();
   }
   split.seconds = since_start();
