@@ -10,6 +10,8 @@
 // the planes' supports: symmetry tells which faces belong together, the feature (thickness) where
 // a part ends, e.g. the root of a wing that the fuselage's planes reflect as well as the wing.
 
+#include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
+
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/property_map.h>
@@ -32,7 +34,7 @@ std::vector<double> face_feature_values(const TriangleMesh& tm, const FaceIndexM
   std::vector<double> values;
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_face_feature_map_t>::value) {
     const auto feature = parameters::get_parameter(np, internal_np::st_face_feature_map);
-    values.resize(static_cast<std::size_t>(std::distance(faces(tm).begin(), faces(tm).end())));
+    values.resize(number_of_faces(tm));
     for(auto f : faces(tm)) {
       const double v = double(get(feature, f));
       if(!std::isfinite(v)) throw std::invalid_argument("segment_by_symmetry: a value of face_feature_map is not finite");
