@@ -21,6 +21,7 @@
 // usage: retrieval_benchmark --data DIR --cache DIR [--output DIR] [--classification FILE]
 //          [--frames symmetry,pca] [--resolution N] [--samples N] [--frame-resolution N]
 //          [--jobs J] [--limit N] [--matrices DIR] [--pose-search] [--held-out-exponent]
+//          [--prst-values LIST]
 //   --data: the PSB folder, holding db/<id/100>/m<id>/m<id>.off (RESULTS.md says how to get it)
 //   --classification: default DATA/classification/test.cla
 //   --jobs: models described at once, each on one thread (default: the number of cores)
@@ -31,6 +32,8 @@
 //               keeping the smallest distance (the alignment's sign and order ambiguities)
 //   --held-out-exponent: also the product PRST^a x GEDT, a chosen on one half of the models
 //               (alternate models of each class) and evaluated on the other, both ways
+//   --prst-values: also the PRST and product rows with the PRST bins read otherwise, a comma-
+//               separated list of sm, thesis, D^P, standardised, rank (prst_values_of)
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -88,6 +91,7 @@ struct Options
   std::size_t limit = 0;          // 0: all
   bool pose_search = false;       // distances minimised over 16 axis flips and swaps
   bool held_out_exponent = false; // PRST^a x GEDT, a chosen on a held-out half
+  std::vector<std::string> prst_values; // other readings of the PRST bins compared (prst_values_of)
 };
 
 Options parse(int argc, char** argv)
@@ -110,6 +114,7 @@ Options parse(int argc, char** argv)
     else if(arg == "--frame-resolution") o.frame_resolution = std::stoi(value);
     else if(arg == "--jobs") o.jobs = unsigned(std::max(1, std::stoi(value)));
     else if(arg == "--limit") o.limit = std::stoul(value);
+    else if(arg == "--prst-values") o.prst_values = benchmark_utilities::split(value);
     else throw std::invalid_argument("unknown option " + arg);
   }
   if(o.data.empty() || o.cache.empty()) throw std::invalid_argument("usage: retrieval_benchmark --data DIR --cache DIR [options]");
@@ -409,7 +414,7 @@ std::vector<Descriptor_arrays> moved(const std::vector<Descriptor>& d, int pose)
   const std::vector<std::size_t> ps = prst_source(n, pose), gs = gedt_source(n, pose);
   std::vector<Descriptor_arrays> result(d.size());
   for(std::size_t m = 0; m < d.size(); ++m) {
-    const std::vector<float>&p = d[m].reflective_symmetry_values(), &g = d[m].gedt_values();
+    const std::vector<float>&p = d[m].compared_symmetry_values(), &g = d[m].gedt_values();
     result[m].prst.resize(p.size());
     result[m].gedt.resize(g.size());
     for(std::size_t x = 0; x < p.size(); ++x) result[m].prst[x] = p[ps[x]];
@@ -418,8 +423,8 @@ std::vector<Descriptor_arrays> moved(const std::vector<Descriptor>& d, int pose)
   return result;
 }
 
-// The two distances of symmetry_descriptor.h, from their documented formulas: the PRST's RMS
-// difference weighted by sqrt(sin theta) per theta row, the GEDT's L2 difference.
+// The two distances of symmetry_descriptor.h, from their documented formulas: the RMS difference
+// of the PRST's compared values (D^(1/4)) weighted by sqrt(sin theta) per theta row, the GEDT's L2.
 std::pair<double, double> distances(const Descriptor_arrays& a, const Descriptor_arrays& b, const std::vector<double>& row_weight)
 {
   const std::size_t n = row_weight.size(), row = n * n;
@@ -442,9 +447,8 @@ std::pair<double, double> distances(const Descriptor_arrays& a, const Descriptor
 // for both parts). Pose 0 is the identity: its distances are checked against the library's.
 Distance_matrices pose_searched_matrices(const std::vector<Descriptor>& d, const Distance_matrices& plain, unsigned jobs)
 {
-  const std::size_t n = d.size(), r = d.front().resolution();
-  std::vector<double> row_weight(r);
-  for(std::size_t i = 0; i < r; ++i) row_weight[i] = std::sqrt(std::sin((double(i) + 0.5) * CGAL_PI / 2. / double(r)));
+  const std::size_t n = d.size();
+  const std::vector<double>& row_weight = d.front().row_weights();
   const std::vector<Descriptor_arrays> fixed = moved(d, 0);
   Distance_matrices m = plain;
   double largest_difference = 0.;
@@ -471,6 +475,65 @@ Distance_matrices pose_searched_matrices(const std::vector<Descriptor>& d, const
     for(std::thread& t : workers) t.join();
   }
   std::cerr << "pose search: largest difference to the library's distances at the identity " << largest_difference << "\n";
+  return m;
+}
+
+// Other readings of a PRST bin's symmetry measure SM than the library's D^(1/4), D the
+// normalised symmetry distance sqrt((1 - SM)/2) (reflective_symmetry_descriptor_distance):
+// "sm": SM itself (the thesis's comparison, the library's until 2026-12-03);
+// "thesis": the transform's value sqrt((1 + SM)/2) (thesis, equation 3.1.1);
+// "D^P": D raised to the power P (the library's is D^0.25);
+// "standardised": SM less its mean over the bins, over its standard deviation (the pattern of
+//   the symmetries, not their overall level);
+// "rank": the fraction of the shape's bins below SM (the pattern, invariant to any monotone map).
+std::vector<float> prst_values_of(const Descriptor& d, const std::string& reading)
+{
+  std::vector<float> v = d.reflective_symmetry_values();
+  if(reading == "sm") return v;
+  if(reading == "thesis") {
+    for(float& x : v) x = std::sqrt(std::max(0.f, (1.f + x) / 2.f));
+  } else if(reading.rfind("D^", 0) == 0) {
+    const double power = std::stod(reading.substr(2));
+    for(float& x : v) x = float(std::pow(std::max(0., (1. - double(x)) / 2.), power / 2.));
+  } else if(reading == "standardised") {
+    double sum = 0., squares = 0.;
+    for(float x : v) { sum += x; squares += double(x) * x; }
+    const double mean = sum / double(v.size()), deviation = std::sqrt(std::max(1e-12, squares / double(v.size()) - mean * mean));
+    for(float& x : v) x = float((x - mean) / deviation);
+  } else if(reading == "rank") {
+    std::vector<std::size_t> order(v.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
+    for(std::size_t r = 0; r < order.size(); ++r) v[order[r]] = float(double(r) / double(order.size()));
+  } else
+    throw std::invalid_argument("--prst-values: sm, thesis, D^P, standardised or rank, not " + reading);
+  return v;
+}
+
+// The PRST and product matrices with the PRST bins read as `reading` (the GEDT's unchanged).
+Distance_matrices matrices_with_prst_values(const std::vector<Descriptor>& d, const Distance_matrices& plain,
+                                           const std::string& reading, unsigned jobs)
+{
+  const std::size_t n = d.size();
+  const std::vector<double>& row_weight = d.front().row_weights();
+  std::vector<Descriptor_arrays> a(n);
+  for(std::size_t m = 0; m < n; ++m) {
+    a[m].prst = prst_values_of(d[m], reading);
+    a[m].gedt = d[m].gedt_values();
+  }
+  Distance_matrices m = plain;
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for(std::size_t i; (i = next++) < n;)
+      for(std::size_t j = i + 1; j < n; ++j) {
+        const double p = distances(a[i], a[j], row_weight).first;
+        m.prst[i][j] = m.prst[j][i] = p;
+        m.product[i][j] = m.product[j][i] = p * plain.gedt[i][j];
+      }
+  };
+  std::vector<std::thread> workers;
+  for(unsigned t = 0; t < jobs; ++t) workers.emplace_back(work);
+  for(std::thread& t : workers) t.join();
   return m;
 }
 
@@ -611,6 +674,13 @@ void evaluate_frame(const Options& o, const std::string& frame, const RE::Classi
     for(const auto& [name, matrix] : {std::make_pair("PRST", &searched.prst), std::make_pair("GEDT", &searched.gedt),
                                       std::make_pair("PRST x GEDT", &searched.product)})
       matrices.push_back({std::string(name) + " pose search", matrix});
+  std::vector<Distance_matrices> readings;
+  readings.reserve(o.prst_values.size());
+  for(const std::string& reading : o.prst_values) {
+    readings.push_back(matrices_with_prst_values(d, plain, reading, o.jobs));
+    matrices.push_back({"PRST (" + reading + ")", &readings.back().prst});
+    matrices.push_back({"PRST (" + reading + ") x GEDT", &readings.back().product});
+  }
   for(const auto& [name, matrix] : matrices) {
     const RE::Summary s = RE::evaluate(*matrix, c);
     std::cout << std::fixed << std::setprecision(1) << "| " << frame << " | " << name << " | " << 100. * s.mean.nearest_neighbour

@@ -3,7 +3,9 @@
 // Author(s): The CGAL Symmetry_transform developers
 //
 // Symmetry descriptors (matching): the distances are zero for identical shapes, symmetric, the
-// two L2 parts satisfy the triangle inequality, a noisy copy is nearer than a different shape,
+// two L2 parts satisfy the triangle inequality, the PRST part compares the bins' symmetry
+// distances D^(1/4) (a perfect symmetry lost counts more than a middling one lowered as much),
+// a noisy copy is nearer than a different shape,
 // translation and scaling change little, saving and loading keeps the distances, and
 // mismatched resolutions and damaged files are rejected.
 
@@ -94,6 +96,37 @@ TEST(SymmetryDescriptor, L2PartsSatisfyTheTriangleInequality)
       for(const Descriptor* c : all)
         for(int part = 0; part < 2; ++part)
           EXPECT_LE(distances[part](*a, *c), distances[part](*a, *b) + distances[part](*b, *c) + 1e-9);
+}
+
+// A descriptor of resolution n whose PRST bins all hold `measure` but bin `changed`, which holds
+// `changed_measure` (the GEDT: one sample, the same for all).
+Descriptor synthetic_descriptor(std::size_t n, double measure, std::size_t changed, double changed_measure)
+{
+  ST::Reflective_symmetry_transform<K> prst(n, Point_3(0, 0, 0), 1.);
+  std::fill(prst.values().begin(), prst.values().end(), measure);
+  prst.values()[changed] = changed_measure;
+  ST::Voxel_grid<K> gedt(n, Point_3(0, 0, 0), 1., 2.);
+  gedt.values()[0] = 1.;
+  return Descriptor(prst, gedt);
+}
+
+TEST(SymmetryDescriptor, PrstDistanceComparesTheSymmetryDistancesToThePowerOneFourth)
+{
+  const std::size_t n = 4, bin = (1 * n + 2) * n + 3; // theta row 1
+  auto distance = [&](double from, double to) {
+    return ST::reflective_symmetry_descriptor_distance(synthetic_descriptor(n, 0.7, bin, from),
+                                                       synthetic_descriptor(n, 0.7, bin, to));
+  };
+  // The documented formula, written out: one bin differs, in theta row 1 of n rows of n^2 bins.
+  auto compared = [](double sm) { return std::pow(std::sqrt((1. - sm) / 2.), 1. / 4.); };
+  double weight_sum = 0.;
+  for(std::size_t i = 0; i < n; ++i) weight_sum += std::sqrt(std::sin((i + 0.5) * CGAL_PI / 2. / double(n))) * double(n * n);
+  const double row_weight = std::sqrt(std::sin(1.5 * CGAL_PI / 2. / double(n)));
+  EXPECT_NEAR(distance(1., 0.9), std::abs(compared(1.) - compared(0.9)) * std::sqrt(row_weight / weight_sum), 1e-6);
+  // The same difference of SM (0.1) counts ~30 times more where a perfect symmetry is lost than
+  // between two middling planes: the plain difference of the SM would count both alike.
+  EXPECT_GT(distance(1., 0.9), 10. * distance(0.6, 0.5));
+  EXPECT_DOUBLE_EQ(ST::gedt_distance(synthetic_descriptor(n, 0.7, bin, 1.), synthetic_descriptor(n, 0.7, bin, 0.9)), 0.);
 }
 
 TEST(SymmetryDescriptor, NoisyCopyIsNearerThanADifferentShape)

@@ -31,7 +31,9 @@ namespace CGAL::Symmetry_transform {
  * The symmetry descriptor of a shape, for matching (thesis, chapter 4): its Planar Reflective
  * Symmetry Transform (PRST) and its Gaussian Euclidean Distance Transform (GEDT), both on
  * \f$ n \times n \times n \f$ bins, stored contiguously as `float` so that comparing two
- * descriptors reads little memory (two \f$ 32^3 \f$ descriptors: 512 KiB).
+ * descriptors reads little memory. Beside the PRST's symmetry measures it keeps the values that
+ * `reflective_symmetry_descriptor_distance()` compares (a \f$ 32^3 \f$ descriptor: 384 KiB in
+ * memory, 256 KiB saved).
  *
  * The descriptors are compared as computed, in the shapes' own coordinates (the PRST bins are
  * measured in the directions of the coordinate axes, the GEDT grid is an axis-aligned cube around
@@ -63,7 +65,7 @@ public:
   {
     if(gedt.resolution() != prst.resolution())
       throw std::invalid_argument("Symmetry_descriptor: the PRST and the GEDT must have the same resolution");
-    compute_weights();
+    prepare_comparison();
   }
 
   /// Number \f$ n \f$ of bins (samples) along each axis of the PRST and of the GEDT.
@@ -99,7 +101,7 @@ public:
   {
     Symmetry_descriptor result;
     result.n_ = internal::read_descriptor(is, result.prst_, result.gedt_);
-    result.compute_weights();
+    result.prepare_comparison();
     return result;
   }
 
@@ -114,12 +116,15 @@ public:
 
   /// \cond SKIP_IN_MANUAL
   const std::vector<double>& row_weights() const { return weights_; }
+  const std::vector<float>& compared_symmetry_values() const { return compared_; }
   /// \endcond
 
 private:
-  // sqrt(sin theta_i) at the centres of the theta bins: the weight of the n^2 bins of index i.
-  void compute_weights()
+  // The PRST bins as compared (internal/matching/distances.h), computed once rather than per
+  // pair; sqrt(sin theta_i) at the centres of the theta bins: the weight of the n^2 bins of index i.
+  void prepare_comparison()
   {
+    compared_ = internal::compared_symmetry_values(prst_);
     weights_.resize(n_);
     for(std::size_t i = 0; i < n_; ++i)
       weights_[i] = std::sqrt(std::sin((double(i) + 0.5) * CGAL_PI / 2. / double(n_)));
@@ -128,6 +133,7 @@ private:
   std::size_t n_ = 0;
   std::vector<float> prst_;
   std::vector<float> gedt_;
+  std::vector<float> compared_;
   std::vector<double> weights_;
 };
 
@@ -135,23 +141,29 @@ private:
  * \ingroup PkgSymmetryTransformMatchingRef
  *
  * The distance between the PRSTs of two descriptors (thesis, section 4.2): the L² difference of
- * the bin values, each bin weighted by \f$ \sqrt{\sin\theta} \f$ (\f$ \theta \f$ at its centre,
+ * the bins, each bin weighted by \f$ \sqrt{\sin\theta} \f$ (\f$ \theta \f$ at its centre,
  * the angle of the plane normals from the \f$ z \f$ axis) so that every direction of normals
- * counts as much as its area on the sphere of directions would make it count, on a square root:
- * \f[ d_{SM}(a, b) = \sqrt{\frac{\sum_{\text{bins}} \sqrt{\sin\theta}\,(SM_a - SM_b)^2}{\sum_{\text{bins}} \sqrt{\sin\theta}}}. \f]
- * Normalised by the sum of the weights, it is the weighted root mean square of the differences
- * of the symmetry measures (in \f$ [0, 1] \f$): a number without unit, comparable across
- * resolutions. Symmetric, zero for equal descriptors, and it satisfies the triangle inequality.
+ * counts as much as its area on the sphere of directions would make it count, on a square root.
+ * A bin of symmetry measure \f$ SM \f$ is compared through its plane's normalised symmetry
+ * distance \f$ D = \sqrt{(1 - SM)/2} \f$ (thesis, section 3.2.1) raised to the power 1/4:
+ * \f[ d_{SM}(a, b) = \sqrt{\frac{\sum_{\text{bins}} \sqrt{\sin\theta}\,(D_a^{1/4} - D_b^{1/4})^2}{\sum_{\text{bins}} \sqrt{\sin\theta}}}. \f]
+ * The power is steep near \f$ D = 0 \f$: a plane that is a perfect symmetry of one shape and
+ * only a good one of the other weighs more than two middling values as far apart, which is what
+ * the thesis expects of the comparison. On the Princeton Shape Benchmark it retrieves better than
+ * the thesis's plain difference of the \f$ SM \f$ (the power chosen on the training set, measured
+ * on the test set: \ref SymmetryTransformMatching). Normalised by the sum of the weights, it is a
+ * weighted root mean square: a number without unit, comparable across resolutions. Symmetric, zero
+ * for equal descriptors, and it satisfies the triangle inequality.
  *
  * \param a,b two descriptors of the same resolution
- * \returns \f$ d_{SM}(a, b) \in [0, 1] \f$
+ * \returns \f$ d_{SM}(a, b) \in [0, 1) \f$
  * \throws std::invalid_argument if the resolutions differ or the descriptors are empty.
 */
 template <typename GeomTraits>
 double reflective_symmetry_descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symmetry_descriptor<GeomTraits>& b)
 {
   internal::check_same_resolution(a, b, "reflective_symmetry_descriptor_distance");
-  return internal::weighted_rms_difference(a.reflective_symmetry_values().data(), b.reflective_symmetry_values().data(),
+  return internal::weighted_rms_difference(a.compared_symmetry_values().data(), b.compared_symmetry_values().data(),
                                            a.resolution(), a.row_weights().data());
 }
 
