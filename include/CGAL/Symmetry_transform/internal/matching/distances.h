@@ -25,7 +25,7 @@ namespace CGAL::Symmetry_transform::internal {
 // is farther from it than an ellipsoid (test_symmetry_descriptor), so 1/4.
 constexpr double compared_symmetry_distance_power = 1. / 4.;
 
-// D^p of every symmetry measure SM in `measures` (SM above 1 by rounding counts as 1).
+// D^p of every symmetry measure SM in `measures` (a Monte Carlo estimate above 1 counts as 1).
 inline std::vector<float> compared_symmetry_values(const std::vector<float>& measures)
 {
   std::vector<float> result(measures.size());
