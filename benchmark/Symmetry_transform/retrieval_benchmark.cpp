@@ -480,7 +480,7 @@ Distance_matrices pose_searched_matrices(const std::vector<Descriptor>& d, const
 
 // Other readings of a PRST bin's symmetry measure SM than the library's D^(1/4), D the
 // normalised symmetry distance sqrt((1 - SM)/2) (reflective_symmetry_descriptor_distance):
-// "sm": SM itself (the thesis's comparison, the library's until 2026-12-03);
+// "sm": SM itself (the library's comparison until 2026-12-03);
 // "thesis": the transform's value sqrt((1 + SM)/2) (thesis, equation 3.1.1);
 // "D^P": D raised to the power P (the library's is D^0.25);
 // "standardised": SM less its mean over the bins, over its standard deviation (the pattern of
@@ -493,8 +493,7 @@ std::vector<float> prst_values_of(const Descriptor& d, const std::string& readin
   if(reading == "thesis") {
     for(float& x : v) x = std::sqrt(std::max(0.f, (1.f + x) / 2.f));
   } else if(reading.rfind("D^", 0) == 0) {
-    const double power = std::stod(reading.substr(2));
-    for(float& x : v) x = float(std::pow(std::max(0., (1. - double(x)) / 2.), power / 2.));
+    v = ST::internal::compared_symmetry_values(v, std::stod(reading.substr(2)));
   } else if(reading == "standardised") {
     double sum = 0., squares = 0.;
     for(float x : v) { sum += x; squares += double(x) * x; }

@@ -150,7 +150,7 @@ private:
  * The power is steep near \f$ D = 0 \f$: a plane that is a perfect symmetry of one shape and
  * only a good one of the other weighs more than two middling values as far apart, which is what
  * the thesis expects of the comparison. On the Princeton Shape Benchmark it retrieves better than
- * the thesis's plain difference of the \f$ SM \f$ (the power chosen on the training set, measured
+ * the plain difference of the \f$ SM \f$ or of the thesis's values \f$ \sqrt{(1+SM)/2} \f$ (the power chosen on the training set, measured
  * on the test set: \ref SymmetryTransformMatching). Normalised by the sum of the weights, it is a
  * weighted root mean square: a number without unit, comparable across resolutions. Symmetric, zero
  * for equal descriptors, and it satisfies the triangle inequality.

@@ -20,17 +20,19 @@ namespace CGAL::Symmetry_transform::internal {
 // distance (thesis, section 3.2.1): steep near D = 0, so that a plane perfect for one shape and
 // merely good for the other weighs more than two middling values apart. p from the PSB
 // *training* set (RESULTS.md, "Retrieval"): among 1/16, 1/8, 1/4, 1/2, 3/4, 1, 3/2 and 2 (SM =
-// 1 - 2 D^2: p = 2 is the thesis's comparison of the SM), 1/16 and 1/8 retrieve best and 1/4
-// 0.2 point less (NN + DCG); below 1/4 a copy of a box with vertex noise of 0.5 % of its radius
-// is farther from it than an ellipsoid (test_symmetry_descriptor), so 1/4.
+// 1 - 2 D^2: p = 2 is the plain difference of the SM, the comparison before), 1/16 and 1/8
+// retrieve best and 1/4 0.2 point less (NN + DCG); below 1/4 a copy of a box with vertex noise
+// of 0.5 % of its radius is farther from it than an ellipsoid (test_symmetry_descriptor), so 1/4.
 constexpr double compared_symmetry_distance_power = 1. / 4.;
 
-// D^p of every symmetry measure SM in `measures` (a Monte Carlo estimate above 1 counts as 1).
-inline std::vector<float> compared_symmetry_values(const std::vector<float>& measures)
+// D^p of every symmetry measure SM in `measures` (a Monte Carlo estimate above 1 counts as 1);
+// other powers than the library's for retrieval_benchmark's comparisons.
+inline std::vector<float> compared_symmetry_values(const std::vector<float>& measures,
+                                                   double power = compared_symmetry_distance_power)
 {
   std::vector<float> result(measures.size());
-  std::transform(measures.begin(), measures.end(), result.begin(), [](float sm) {
-    return float(std::pow(std::max(0., (1. - double(sm)) / 2.), compared_symmetry_distance_power / 2.));
+  std::transform(measures.begin(), measures.end(), result.begin(), [power](float sm) {
+    return float(std::pow(std::max(0., (1. - double(sm)) / 2.), power / 2.));
   });
   return result;
 }
