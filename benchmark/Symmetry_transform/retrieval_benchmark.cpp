@@ -13,7 +13,7 @@
 //
 // The collection is indexed once: each descriptor is saved in the cache folder and reused by
 // later runs with the same settings (a progress line shows done/total, rate and time left). A
-// mesh is read as a polygon soup, repaired (repair_polygon_soup, orient_polygon_soup), turned
+// mesh is read as a polygon soup, repaired (psb_models.h: repair_polygon_soup, orient_polygon_soup), turned
 // into a mesh and triangulated; a model that cannot be read or described is listed with the
 // reason, never dropped silently, and the statistics are computed over the models described in
 // both frames (the classes keep the others' absence in their sizes).
@@ -37,18 +37,14 @@
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/transform.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Symmetry_transform/symmetry_alignment.h>
 #include <CGAL/Symmetry_transform/symmetry_descriptor.h>
 
 #include "benchmark_utilities.h"
+#include "psb_models.h"
 #include "retrieval_evaluation.h"
 
 #include <algorithm>
@@ -124,78 +120,6 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-typedef std::vector<K::Point_3> Points;
-typedef std::vector<std::vector<std::size_t>> Polygons;
-
-// Drops the polygons with fewer than 3 corners or a non-finite corner (the library refuses NaN).
-std::size_t drop_unusable_polygons(const Points& points, Polygons& polygons)
-{
-  const std::size_t before = polygons.size();
-  polygons.erase(std::remove_if(polygons.begin(), polygons.end(), [&](const std::vector<std::size_t>& p) {
-                   if(p.size() < 3) return true;
-                   for(std::size_t v : p)
-                     if(v >= points.size() || !std::isfinite(points[v].x()) || !std::isfinite(points[v].y()) ||
-                        !std::isfinite(points[v].z()))
-                       return true;
-                   return false;
-                 }),
-                 polygons.end());
-  return before - polygons.size();
-}
-
-// The faces of `mesh` as a triangle soup, each polygon cut into a fan around its first corner
-// (the fallback for the polygons that PMP::triangulate_faces could not triangulate).
-void fan_triangulated(Mesh& mesh)
-{
-  Points points(mesh.points().begin(), mesh.points().end());
-  Polygons triangles;
-  for(Mesh::Face_index f : faces(mesh)) {
-    std::vector<std::size_t> corners;
-    for(Mesh::Vertex_index v : vertices_around_face(halfedge(f, mesh), mesh)) corners.push_back(std::size_t(v));
-    for(std::size_t i = 1; i + 1 < corners.size(); ++i) triangles.push_back({corners[0], corners[i], corners[i + 1]});
-  }
-  PMP::orient_polygon_soup(points, triangles);
-  mesh.clear();
-  PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
-}
-
-// Reads any polygon file as a soup, repairs it (merged duplicate points, degenerate and duplicate
-// polygons removed, orientation made consistent, non-manifold vertices duplicated), makes a
-// mesh of it and triangulates it. Returns what had to be done ("" for a clean triangle mesh);
-// throws if nothing usable is left.
-std::string read_triangle_mesh(const std::string& file, Mesh& mesh)
-{
-  Points points;
-  Polygons polygons;
-  if(!CGAL::IO::read_polygon_soup(file, points, polygons) || polygons.empty())
-    throw std::runtime_error("not a readable polygon file");
-  std::ostringstream note;
-  const std::size_t read = polygons.size();
-  std::size_t non_triangles = 0;
-  for(const auto& p : polygons) non_triangles += p.size() != 3;
-  if(const std::size_t dropped = drop_unusable_polygons(points, polygons)) note << dropped << " unusable polygons dropped; ";
-  PMP::repair_polygon_soup(points, polygons);
-  if(polygons.size() != read) note << "repair kept " << polygons.size() << " of " << read << " polygons; ";
-  if(polygons.empty()) throw std::runtime_error("no usable polygon");
-  if(!PMP::orient_polygon_soup(points, polygons)) note << "non-manifold or non-orientable: points duplicated; ";
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(non_triangles > 0) {
-    note << non_triangles << " polygons with more than 3 corners triangulated";
-    if(!PMP::triangulate_faces(mesh)) {
-      fan_triangulated(mesh);
-      note << " (some as fans)";
-    }
-    note << "; ";
-  }
-  std::string text = note.str();
-  return text.empty() ? text : text.substr(0, text.size() - 2);
-}
-
-fs::path model_path(const Options& o, int id)
-{
-  return o.data / "db" / std::to_string(id / 100) / ("m" + std::to_string(id)) / ("m" + std::to_string(id) + ".off");
-}
-
 // The cache folder of a frame: its name holds every setting a descriptor depends on.
 fs::path cache_folder(const Options& o, const std::string& frame)
 {
@@ -234,12 +158,12 @@ Model_result describe(const Options& o, const std::string& frame, int id, const 
 {
   Model_result r;
   const auto start = std::chrono::steady_clock::now();
-  const fs::path path = model_path(o, id);
+  const fs::path path = psb_models::model_path(o.data, id);
   const std::string stem = "m" + std::to_string(id);
   try {
     Mesh mesh;
     if(!fs::exists(path)) throw std::runtime_error("file missing: " + path.string());
-    r.note = read_triangle_mesh(path.string(), mesh);
+    r.note = psb_models::read_triangle_mesh(path.string(), mesh);
     const auto threads = CGAL::parameters::number_of_threads(1u);
     const ST::Symmetry_frame<K> f = frame == "symmetry"
       ? ST::symmetry_frame(mesh, CGAL::parameters::grid_resolution(o.frame_resolution).number_of_threads(1u))

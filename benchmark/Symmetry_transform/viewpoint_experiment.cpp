@@ -3,17 +3,22 @@
 // Author(s): The CGAL Symmetry_transform developers
 //
 // The viewpoint experiment of the thesis (section 4.3.3: on 22 models, "the best viewpoint was
-// always 20-35 degrees off-axis"): on CGAL's sample meshes, the angle between the best view of
-// best_viewpoints() and the nearest axis of the symmetry frame of the same detection. With
-// --diagnostics 1, per mesh, the principal planes (measure, support, angle to the nearest frame
-// axis) and the best view's angle when the planes are given otherwise: near-duplicate normals
-// counted once, the weights multiplied by the supports, only the frame's planes; the thesis's W
-// (every local maximum of the PRST, or the detection's candidates, weighted by the transform);
-// the measures raised to a power (sharper contrast between the planes); the measures less a
-// quantile of the transform's directions' best values; the measures times the planes' prominence
-// over the planes tilted around them.
+// always 20-35 degrees off-axis"): the angle between the best view of best_viewpoints() and the
+// nearest axis of the symmetry frame of the same detection, on one of three sets: CGAL's sample
+// meshes (--set demo), the man-made objects built in code with perfect symmetries, like the
+// thesis's models (--set man-made, test/Symmetry_transform/include/Symmetry_transform_man_made_shapes.h;
+// also the angle to the axes they are built in), or the first model of every class of the
+// Princeton Shape Benchmark's test set (--set psb --data DIR, the folder of the benchmark, read
+// with psb_models.h; research use only, never committed). Besides the planes as
+// detect_principal_symmetries() returns them, columns give them otherwise: near-duplicate normals
+// counted once, the weights multiplied by the supports, only the strongest distinct planes; the
+// thesis's W (every local maximum of the PRST, or the detection's candidates, weighted by the
+// transform); the measures raised to a power (sharper contrast between the planes); the measures
+// less a quantile of the transform's directions' best values; the measures times the planes'
+// prominence over the planes tilted around them. --diagnostics 1 lists each shape's planes.
 //
-// usage: viewpoint_experiment [--meshes a.off,...] [--resolution N] [--cache DIR] [--diagnostics 1]
+// usage: viewpoint_experiment [--set demo|man-made|psb] [--meshes a.off,...] [--data DIR]
+//                             [--resolution N] [--cache DIR] [--diagnostics 1]
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -24,14 +29,17 @@
 #include <CGAL/Symmetry_transform/symmetry_alignment.h>
 #include <CGAL/Symmetry_transform/viewpoint_selection.h>
 
+#include <Symmetry_transform_man_made_shapes.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <iterator>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -39,12 +47,15 @@
 
 #include "benchmark_utilities.h"
 #include "detection_cache.h"
+#include "psb_models.h"
+#include "retrieval_evaluation.h"
 
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::Symmetry_transform::Principal_symmetry<K> Symmetry;
+typedef CGAL::Symmetry_transform::internal::Detection<K> Detection;
 namespace ST = CGAL::Symmetry_transform;
 namespace STI = CGAL::Symmetry_transform::internal;
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -53,6 +64,8 @@ const char* default_meshes = "bull.off,cow.off,camel.off,dino.off,elephant.off,t
                              "lion.off,bear.off,armadillo.off,man.off,mannequin-devil.off,diplodocus.off,"
                              "couplingdown.off,fandisk.off,rotor_small.off,elk.off,pig.off,helmet.off,"
                              "mushroom.off,spool.off,anchor.off";
+// The thesis's "20-35 degrees off-axis", widened by 5 degrees on each side (issue 15).
+const double least_off_axis = 15., most_off_axis = 40.;
 
 // The angle in degrees between the view v and the nearest axis of the frame, as lines.
 double off_axis(const Eigen::Vector3d& v, const STI::Eigen_frame& frame)
@@ -204,9 +217,52 @@ std::string fixed(double x, int digits = 1)
   return out.str();
 }
 
+bool off_axis_enough(double degrees) { return degrees >= least_off_axis && degrees <= most_off_axis; }
+
+// A way of giving the planes of a detection to best_viewpoints(): one column of the table.
+struct Column
+{
+  std::string title;
+  std::function<std::vector<Symmetry>(const Detection&)> planes;
+  int in_range = 0;
+};
+
+std::vector<Column> columns()
+{
+  std::vector<Column> c = {
+    {"planes as returned", [](const Detection& d) { return d.symmetries; }},
+    {"normals within 10 deg counted once", [](const Detection& d) { return distinct_normals(d.symmetries, 10.); }},
+    {"weights M x support", [](const Detection& d) { return support_weighted(d.symmetries); }},
+    {"both", [](const Detection& d) { return distinct_normals(support_weighted(d.symmetries), 10.); }},
+    {"3 strongest normals 10 deg apart", [](const Detection& d) { return strongest_distinct(d.symmetries, 3, 10.); }},
+    {"3 strongest 30 deg apart", [](const Detection& d) { return strongest_distinct(d.symmetries, 3, 30.); }},
+    {"M less the weakest M", [](const Detection& d) { return contrasted(d.symmetries); }},
+    {"the same, merged", [](const Detection& d) { return distinct_normals(contrasted(d.symmetries), 10.); }},
+    {"all PRST maxima", [](const Detection& d) { return transform_maxima(d.prst, false); }},
+    {"PRST candidates", [](const Detection& d) { return transform_maxima(d.prst, true); }}};
+  for(const double power : {2., 3., 4.})
+    c.push_back({"M^" + fixed(power, 0), [power](const Detection& d) { return sharpened(d.symmetries, power); }});
+  for(const double q : {0.5, 0.75, 0.9})
+    for(const double power : {1., 2.})
+      c.push_back({"M less the " + fixed(100. * q, 0) + " % quantile" + (power > 1. ? ", squared" : ""),
+                   [q, power](const Detection& d) { return above(d.symmetries, direction_quantile(d.prst, q), power); }});
+  for(const double degrees : {5., 30.})
+    c.push_back({"M x prominence over " + fixed(degrees, 0) + " deg tilts",
+                 [degrees](const Detection& d) { return prominent(d.symmetries, d.prst, degrees); }});
+  return c;
+}
+
+// A shape of a set; `built_in_frame` when its true axes are x, y, z (the man-made objects).
+struct Shape
+{
+  std::string name;
+  Mesh mesh;
+  bool built_in_frame = false;
+};
+
 struct Options
 {
-  std::string meshes = default_meshes, cache;
+  std::string set = "demo", meshes = default_meshes, data, cache;
   int resolution = 64;
   bool diagnostics = false;
 };
@@ -215,13 +271,61 @@ Options parse(int argc, char** argv)
 {
   Options o;
   for(const auto& [arg, value] : benchmark_utilities::option_pairs(argc, argv)) {
-    if(arg == "--meshes") o.meshes = value;
+    if(arg == "--set") o.set = value;
+    else if(arg == "--meshes") o.meshes = value;
+    else if(arg == "--data") o.data = value;
     else if(arg == "--resolution") o.resolution = std::stoi(value);
     else if(arg == "--cache") o.cache = value;
     else if(arg == "--diagnostics") o.diagnostics = value != "0";
     else throw std::invalid_argument("unknown option: " + arg);
   }
+  if(o.set != "demo" && o.set != "man-made" && o.set != "psb")
+    throw std::invalid_argument("--set expects demo, man-made or psb, not '" + o.set + "'");
+  if(o.set == "psb" && o.data.empty()) throw std::invalid_argument("--set psb needs --data DIR (the benchmark's folder)");
   return o;
+}
+
+// The first model of every class of the benchmark's test set (classes in the file's order).
+std::vector<Shape> psb_shapes(const std::string& data)
+{
+  std::ifstream in(std::filesystem::path(data) / "classification" / "test.cla");
+  const retrieval_evaluation::Classification c = retrieval_evaluation::read_classification(in);
+  std::vector<Shape> shapes;
+  for(std::size_t i = 0; i < c.model_ids.size(); ++i) {
+    if(i > 0 && c.class_of[i] == c.class_of[i - 1]) continue;
+    const int id = c.model_ids[i];
+    Shape s{"m" + std::to_string(id) + " (" + c.class_names[c.class_of[i]] + ")", Mesh()};
+    try {
+      psb_models::read_triangle_mesh(psb_models::model_path(data, id).string(), s.mesh);
+      shapes.push_back(std::move(s));
+    } catch(const std::exception& e) {
+      std::cerr << "skipped " << s.name << ": " << e.what() << "\n";
+    }
+  }
+  return shapes;
+}
+
+std::vector<Shape> shapes_of_set(const Options& o)
+{
+  std::vector<Shape> shapes;
+  if(o.set == "psb") return psb_shapes(o.data);
+  if(o.set == "man-made") {
+    for(const auto& make : st_man_made::man_made_shapes()) {
+      st_man_made::Man_made_shape s = make();
+      shapes.push_back({s.name, std::move(s.mesh), true});
+    }
+    return shapes;
+  }
+  for(const std::string& name : benchmark_utilities::split(o.meshes)) {
+    Shape s{name, Mesh()};
+    if(!CGAL::IO::read_polygon_mesh(benchmark_utilities::mesh_path(name), s.mesh) || is_empty(s.mesh)) {
+      std::cerr << "skipped " << name << "\n";
+      continue;
+    }
+    if(!CGAL::is_triangle_mesh(s.mesh)) PMP::triangulate_faces(s.mesh);
+    shapes.push_back(std::move(s));
+  }
+  return shapes;
 }
 
 void print_planes(const std::vector<Symmetry>& symmetries, const STI::Eigen_frame& frame)
@@ -233,81 +337,73 @@ void print_planes(const std::vector<Symmetry>& symmetries, const STI::Eigen_fram
   std::cout << "\n";
 }
 
+// The cache key of a shape's detection ("demo_" + mesh name for the sample meshes, as before).
+std::string cache_key(const Options& o, const Shape& s)
+{
+  const std::string name = o.set == "psb" ? s.name.substr(0, s.name.find(' ')) : s.name;
+  return o.set + "_" + name + "_" + std::to_string(o.resolution) + "_whole";
+}
+
+// One row of the table; returns the angle of the planes as returned (the library's best view).
+double print_row(const Options& o, const Shape& s, std::vector<Column>& columns, double& to_true_axes)
+{
+  const auto np = CGAL::parameters::grid_resolution(o.resolution).random_seed(1);
+  const Detection d = detection_cache::cached(o.cache, cache_key(o, s), [&] { return STI::detection_of_mesh(s.mesh, np); });
+  const STI::Eigen_frame frame = STI::symmetry_frame(STI::mass_of_mesh(s.mesh, np), d.symmetries, d.prst);
+  std::cout << "| " << s.name << " | " << d.symmetries.size();
+  to_true_axes = -1.;
+  if(s.built_in_frame) {
+    const STI::Eigen_frame built{Eigen::Vector3d::Zero(), {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitZ()}};
+    to_true_axes = off_axis(best_view(d.symmetries), built);
+    std::cout << " | " << fixed(to_true_axes);
+  }
+  double returned = 0.;
+  for(Column& c : columns) {
+    const double angle = off_axis(best_view(c.planes(d)), frame);
+    if(&c == &columns.front()) returned = angle;
+    c.in_range += off_axis_enough(angle);
+    std::cout << " | " << fixed(angle);
+  }
+  std::cout << " |\n";
+  if(o.diagnostics) print_planes(d.symmetries, frame);
+  return returned;
+}
+
+void print_header(const Options& o, const std::vector<Column>& columns)
+{
+  std::cout << "Command: `viewpoint_experiment --set " << o.set << (o.set == "demo" ? " --meshes " + o.meshes : "")
+            << " --resolution " << o.resolution << "`\n\n| shape | planes"
+            << (o.set == "man-made" ? " | best view's angle to the nearest axis it is built in (deg)" : "");
+  std::string rule = "|---|---:";
+  for(const Column& c : columns) {
+    std::cout << " | " << (&c == &columns.front() ? "best view's angle to the nearest frame axis (deg)" : c.title);
+    rule += "|---:";
+  }
+  std::cout << " |\n" << rule << (o.set == "man-made" ? "|---:" : "") << "|\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 try {
   const Options o = parse(argc, argv);
-  std::cout << "Command: `viewpoint_experiment --meshes " << o.meshes << " --resolution " << o.resolution << "`\n\n"
-            << "| mesh | planes | best view's angle to the nearest frame axis (deg) | normals within 10 deg counted once "
-            << "| weights M x support | both | 3 strongest normals 10 deg apart | 3 strongest 30 deg apart | M less the "
-            << "weakest M | the same, merged | all PRST maxima | PRST candidates | M^2 | M^3 | M^4 "
-            << "| M less the 50 % quantile | its square | 75 % | its square | 90 % | its square "
-            << "| M x prominence over 5 deg tilts | over 30 deg tilts |\n"
-            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  const auto np = CGAL::parameters::grid_resolution(o.resolution).random_seed(1);
-  int in_range = 0, in_range_maxima = 0, in_range_candidates = 0, count = 0, in_range_sharpened[3] = {0, 0, 0};
-  std::map<int, int> in_range_prominent, in_range_quantile;
-  for(const std::string& name : benchmark_utilities::split(o.meshes)) {
-    Mesh mesh;
-    if(!CGAL::IO::read_polygon_mesh(benchmark_utilities::mesh_path(name), mesh) || is_empty(mesh)) {
-      std::cerr << "skipped " << name << "\n";
-      continue;
-    }
-    if(!CGAL::is_triangle_mesh(mesh)) PMP::triangulate_faces(mesh);
-    const std::string key = "demo_" + name + "_" + std::to_string(o.resolution) + "_whole";
-    const STI::Detection<K> d = detection_cache::cached(o.cache, key, [&] { return STI::detection_of_mesh(mesh, np); });
-    const STI::Eigen_frame frame = STI::symmetry_frame(STI::mass_of_mesh(mesh, np), d.symmetries, d.prst);
-    const double angle = off_axis(best_view(d.symmetries), frame);
-    const double merged = off_axis(best_view(distinct_normals(d.symmetries, 10.)), frame);
-    const double weighted = off_axis(best_view(support_weighted(d.symmetries)), frame);
-    const double both = off_axis(best_view(distinct_normals(support_weighted(d.symmetries), 10.)), frame);
-    const double three = off_axis(best_view(strongest_distinct(d.symmetries, 3, 10.)), frame);
-    const double three30 = off_axis(best_view(strongest_distinct(d.symmetries, 3, 30.)), frame);
-    const double contrast = off_axis(best_view(contrasted(d.symmetries)), frame);
-    const double contrast_merged = off_axis(best_view(distinct_normals(contrasted(d.symmetries), 10.)), frame);
-    const double maxima = off_axis(best_view(transform_maxima(d.prst, false)), frame);
-    const double candidates = off_axis(best_view(transform_maxima(d.prst, true)), frame);
-    std::cout << "| " << name << " | " << d.symmetries.size() << " | " << fixed(angle) << " | " << fixed(merged) << " | "
-              << fixed(weighted) << " | " << fixed(both) << " | " << fixed(three) << " | " << fixed(three30) << " | "
-              << fixed(contrast) << " | " << fixed(contrast_merged) << " | " << fixed(maxima) << " | " << fixed(candidates);
-    for(const double power : {2., 3., 4.}) {
-      const double sharp = off_axis(best_view(sharpened(d.symmetries, power)), frame);
-      std::cout << " | " << fixed(sharp);
-      in_range_sharpened[int(power) - 2] += sharp >= 15. && sharp <= 40.;
-    }
-    for(const double q : {0.5, 0.75, 0.9}) {
-      const double b = direction_quantile(d.prst, q);
-      for(const double power : {1., 2.}) {
-        const std::vector<Symmetry> p = above(d.symmetries, b, power);
-        const double a = off_axis(best_view(p), frame);
-        std::cout << " | " << fixed(a);
-        in_range_quantile[int(100 * q) * 10 + int(power)] += a >= 15. && a <= 40.;
-        if(o.diagnostics) { std::cout << " (b " << fixed(b, 2) << ": "; for(const Symmetry& x : p) std::cout << fixed(x.symmetry, 2) << " "; std::cout << ")"; }
-      }
-    }
-    for(const double degrees : {5., 30.}) {
-      const std::vector<Symmetry> p = prominent(d.symmetries, d.prst, degrees);
-      const double a = off_axis(best_view(p), frame);
-      std::cout << " | " << fixed(a);
-      in_range_prominent[int(degrees)] += a >= 15. && a <= 40.;
-      if(o.diagnostics) { std::cout << " ("; for(const Symmetry& x : p) std::cout << fixed(x.symmetry, 2) << " "; std::cout << ")"; }
-    }
-    std::cout << " |\n";
-    in_range_maxima += maxima >= 15. && maxima <= 40.;
-    in_range_candidates += candidates >= 15. && candidates <= 40.;
-    if(o.diagnostics) print_planes(d.symmetries, frame);
-    in_range += angle >= 15. && angle <= 40.;
-    ++count;
+  std::vector<Column> table = columns();
+  print_header(o, table);
+  std::vector<double> angles;
+  int true_axes_in_range = 0;
+  for(const Shape& s : shapes_of_set(o)) {
+    double to_true_axes = -1.;
+    angles.push_back(print_row(o, s, table, to_true_axes));
+    true_axes_in_range += off_axis_enough(to_true_axes);
   }
-  std::cout << "\nBest view 15 to 40 degrees from the nearest frame axis on " << in_range << " of " << count
-            << " meshes; with all PRST maxima " << in_range_maxima << ", with the PRST candidates " << in_range_candidates
-            << "; with M^2, M^3, M^4 " << in_range_sharpened[0] << ", " << in_range_sharpened[1] << ", "
-            << in_range_sharpened[2] << ".\n";
-  for(const auto& [q, n] : in_range_quantile)
-    std::cout << "M less the " << q / 10 << " % quantile, power " << q % 10 << ": " << n << " of " << count << "\n";
-  for(const auto& [d, n] : in_range_prominent)
-    std::cout << "M x prominence over tilts of " << d << " deg: " << n << " of " << count << "\n";
+  const int count = int(angles.size());
+  std::cout << "\nBest view " << least_off_axis << " to " << most_off_axis << " degrees from the nearest frame axis on "
+            << table.front().in_range << " of " << count << " shapes (median " << fixed(benchmark_utilities::median(angles))
+            << " deg)";
+  if(o.set == "man-made") std::cout << "; from the axes the shapes are built in: " << true_axes_in_range << " of " << count;
+  std::cout << ".\nWith the planes given otherwise:\n";
+  for(std::size_t i = 1; i < table.size(); ++i)
+    std::cout << "  " << table[i].title << ": " << table[i].in_range << " of " << count << "\n";
   return EXIT_SUCCESS;
 }
 catch(const std::exception& e) {
