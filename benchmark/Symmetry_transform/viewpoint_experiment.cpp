@@ -18,7 +18,9 @@
 // prominence over the planes tilted around them. --diagnostics 1 lists each shape's planes.
 //
 // usage: viewpoint_experiment [--set demo|man-made|psb] [--meshes a.off,...] [--data DIR]
-//                             [--resolution N] [--cache DIR] [--diagnostics 1]
+//                             [--resolution N] [--cache DIR] [--diagnostics 1] [--export DIR]
+// --export writes each shape's mesh to DIR/<name>.off (for the manual's renderings of the
+// man-made objects: doc/Symmetry_transform/render_application_figures.py --mesh-dir DIR).
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -276,7 +278,7 @@ struct Shape
 
 struct Options
 {
-  std::string set = "demo", meshes = default_meshes, data, cache;
+  std::string set = "demo", meshes = default_meshes, data, cache, export_folder;
   int resolution = 64;
   bool diagnostics = false;
 };
@@ -291,6 +293,7 @@ Options parse(int argc, char** argv)
     else if(arg == "--resolution") o.resolution = std::stoi(value);
     else if(arg == "--cache") o.cache = value;
     else if(arg == "--diagnostics") o.diagnostics = value != "0";
+    else if(arg == "--export") o.export_folder = value;
     else throw std::invalid_argument("unknown option: " + arg);
   }
   if(o.set != "demo" && o.set != "man-made" && o.set != "psb")
@@ -435,7 +438,11 @@ try {
   std::vector<Column> table = columns();
   print_header(o, table);
   std::vector<Row_angles> rows;
-  for(const Shape& s : shapes_of_set(o)) rows.push_back(print_row(o, s, table));
+  for(const Shape& s : shapes_of_set(o)) {
+    rows.push_back(print_row(o, s, table));
+    if(!o.export_folder.empty() && !CGAL::IO::write_polygon_mesh(o.export_folder + "/" + s.name + ".off", s.mesh))
+      throw std::runtime_error("cannot write " + s.name + ".off in " + o.export_folder);
+  }
   print_summary(o, rows, table);
   return EXIT_SUCCESS;
 }

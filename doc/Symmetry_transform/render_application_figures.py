@@ -7,12 +7,12 @@
 usage (from anywhere; Debian's python3, for which python3-vtk9 is built):
 
     /usr/bin/python3 doc/Symmetry_transform/render_application_figures.py [--build-dir DIR]
-        [--resolution N] [--alignment MESH ...] [--viewpoints MESH ...]
+        [--resolution N] [--alignment MESH ...] [--viewpoints MESH ...] [--mesh-dir DIR] [--z-up]
 
 It builds the examples align_to_symmetry_frame and best_viewpoint (Release) in DIR (default:
 build/ of the repository), runs them on meshes of CGAL's sample data (DIR/data/meshes, unpacked
-by scripts/setup.sh, which it calls if needed) at grid resolution N (default 64), parses what
-they print and renders:
+by scripts/setup.sh, which it calls if needed; or DIR/MESH.off with --mesh-dir) at grid
+resolution N (default 64), parses what they print and renders:
 
 - doc/Symmetry_transform/fig/alignment_frames.png: each --alignment mesh (default: bull cow),
   translucent, with its symmetry frame (thick red, green and blue arrows for axes 1, 2 and 3,
@@ -347,11 +347,14 @@ def sphere_actor(sphere, colour_array):
     return actor
 
 
-def render_viewpoints(name, mesh, sphere_ply, views, resolution, png):
+def render_viewpoints(name, mesh, sphere_ply, views, resolution, png, up=None):
+    """up: the up direction of the views (default: the mesh's entry in VIEWS, else y)."""
     best, best_score, worst, worst_score = views
     sphere, colour_array, centre, radius = read_sphere(sphere_ply)
     bounds = mesh.GetBounds()
-    view = VIEWS.get(name, rf.DEFAULT_VIEW)
+    view = dict(VIEWS.get(name, rf.DEFAULT_VIEW))
+    if up:
+        view["up"] = up
     columns = 3
     width, height = PANEL_W * columns, PANEL_H + LEGEND_H
     window = new_window(width, height)
@@ -420,6 +423,9 @@ def main():
     parser.add_argument("--resolution", type=int, default=64)
     parser.add_argument("--alignment", nargs="*", default=["bull", "cow"])
     parser.add_argument("--viewpoints", nargs="*", default=["bull", "cow"])
+    parser.add_argument("--mesh-dir", help="read MESH.off from this folder instead of the sample data "
+                        "(e.g. the man-made objects that viewpoint_experiment --set man-made --export DIR writes)")
+    parser.add_argument("--z-up", action="store_true", help="z is up in the views (the man-made objects stand on z)")
     args = parser.parse_args()
 
     build_dir = os.path.abspath(args.build_dir)
@@ -429,7 +435,7 @@ def main():
     os.makedirs(FIG_DIR, exist_ok=True)
 
     def off(name):
-        return os.path.join(data_dir, "meshes", name + ".off")
+        return os.path.join(args.mesh_dir or os.path.join(data_dir, "meshes"), name + ".off")
 
     items = []
     for name in args.alignment:
@@ -444,7 +450,7 @@ def main():
         out = output_of([os.path.join(examples, "best_viewpoint"), off(name), "--resolution", str(args.resolution),
                          "--output", sphere])
         render_viewpoints(name, read_off(off(name)), sphere, parse_views(out), args.resolution,
-                          os.path.join(FIG_DIR, "viewpoint_%s.png" % name))
+                          os.path.join(FIG_DIR, "viewpoint_%s.png" % name), up=(0, 0, 1) if args.z_up else None)
 
 
 if __name__ == "__main__":
