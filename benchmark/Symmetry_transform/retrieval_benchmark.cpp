@@ -13,10 +13,10 @@
 //
 // The collection is indexed once: each descriptor is saved in the cache folder and reused by
 // later runs with the same settings (a progress line shows done/total, rate and time left). A
-// mesh is read as a polygon soup, repaired (psb_models.h: repair_polygon_soup, orient_polygon_soup), turned
-// into a mesh and triangulated; a model that cannot be read or described is listed with the
-// reason, never dropped silently, and the statistics are computed over the models described in
-// both frames (the classes keep the others' absence in their sizes).
+// mesh is read as a polygon soup, repaired (psb_models.h: repair_polygon_soup,
+// orient_polygon_soup), turned into a mesh and triangulated; a model that cannot be read or
+// described is listed with the reason, never dropped silently, and the statistics are computed
+// over the models described in both frames (the classes keep the others' absence in their sizes).
 //
 // usage: retrieval_benchmark --data DIR --cache DIR [--output DIR] [--classification FILE]
 //          [--frames symmetry,pca] [--resolution N] [--samples N] [--frame-resolution N]
