@@ -19,8 +19,8 @@
 //
 // usage: viewpoint_experiment [--set demo|man-made|psb] [--meshes a.off,...] [--data DIR]
 //                             [--resolution N] [--cache DIR] [--diagnostics 1] [--export DIR]
-// --export writes each shape's mesh to DIR/<name>.off (for the manual's renderings of the
-// man-made objects: doc/Symmetry_transform/render_application_figures.py --mesh-dir DIR).
+// --export (man-made set) writes each object's mesh to DIR/<name>.off, for the manual's
+// renderings (doc/Symmetry_transform/render_application_figures.py --mesh-dir DIR --z-up).
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -301,6 +301,7 @@ Options parse(int argc, char** argv)
   if(o.set == "psb" && o.data.empty()) throw std::invalid_argument("--set psb needs --data DIR (the benchmark's folder)");
   if(o.set != "psb" && !o.data.empty()) throw std::invalid_argument("--data is for --set psb");
   if(o.set != "demo" && o.meshes != default_meshes) throw std::invalid_argument("--meshes is for --set demo");
+  if(o.set != "man-made" && !o.export_folder.empty()) throw std::invalid_argument("--export is for --set man-made");
   return o;
 }
 
