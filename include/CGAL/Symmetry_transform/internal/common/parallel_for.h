@@ -104,6 +104,19 @@ void parallel_for(std::size_t count, unsigned threads, const Body& body)
     if(e) std::rethrow_exception(e);
 }
 
+// Runs body(chunk) for every chunk of [0, chunks), thread t taking the chunks t, t + threads, ...
+// (interleaved: neighbouring chunks often cost alike, so every thread gets its share). For work
+// whose results are kept per chunk and combined in chunk order by the caller: they then depend on
+// the chunks alone, never on the thread count. Stops early when the work is cancelled.
+template <typename Body>
+void parallel_for_chunks(std::size_t chunks, unsigned threads, const Body& body)
+{
+  threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, chunks)));
+  parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
+    for(std::size_t c = thread; c < chunks && parallel_poll(); c += threads) body(c);
+  });
+}
+
 } // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -56,7 +57,7 @@ constexpr unsigned exact_polish_steps = 4;
 constexpr double polish_converged_step = 1e-7;
 // Weights below this add nothing to the fit (exp(-27.6): farther than 7.4 widths).
 constexpr double negligible_weight = 1e-12;
-// Samples per chunk of work: each thread takes every threads-th chunk.
+// Samples per chunk of work: the sums and the hints' chain are the chunk's own.
 constexpr std::size_t samples_per_chunk = 64;
 
 struct Isp_settings
@@ -70,6 +71,9 @@ struct Isp_settings
   // weight is zero at the widths ISP uses (sigma and narrower), and the closest-point search, the
   // costliest step, is skipped. Made by beyond_band_of(), it refers to a GEDT that must outlive it.
   std::function<bool(const Eigen::Vector3d&)> beyond_band;
+  // The centre of the shape: ISP fits its planes in coordinates relative to it, so that a shape
+  // far from the origin is fitted as the same shape at the origin (isp::Local_frame).
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
 };
 
 // The band test of a GEDT, which it refers to (hence no temporary).
@@ -163,17 +167,15 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
     s.add<Matcher::has_normals>(samples[i], image, match, plane, t1, t2, settings.sigma, width * settings.sigma);
   };
   // The samples follow a Hilbert curve: contiguous slices would be regions of the shape, some
-  // mapped far from the surface (costly searches) and some onto it. Each thread takes every
-  // threads-th chunk instead, a fixed share, so that sums are reproducible.
+  // mapped far from the surface (costly searches) and some onto it; the threads take the chunks
+  // in turn instead. Each chunk has its own sums and its own chain of hints, added in chunk order:
+  // the result does not depend on the thread count.
   const std::size_t chunks = (samples.size() + samples_per_chunk - 1) / samples_per_chunk;
-  const unsigned threads = unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), chunks)));
-  std::vector<Isp_sums> partial(threads);
-  parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
+  std::vector<Isp_sums> partial(chunks);
+  parallel_for_chunks(chunks, settings.threads, [&](std::size_t c) {
     std::size_t previous = none;
-    for(std::size_t c = thread; c < chunks && parallel_poll(); c += threads) {
-      for(std::size_t i = c * samples_per_chunk; i < (std::min)((c + 1) * samples_per_chunk, samples.size()); ++i)
-        add_sample(i, partial[thread], previous);
-    }
+    for(std::size_t i = c * samples_per_chunk; i < (std::min)((c + 1) * samples_per_chunk, samples.size()); ++i)
+      add_sample(i, partial[c], previous);
   });
   Isp_sums total;
   for(const Isp_sums& s : partial) total.add(s);
@@ -333,17 +335,73 @@ double climb(const std::vector<Eigen::Vector3d>& samples, const Dplane& start, c
   return width;
 }
 
+// The coordinates ISP works in: relative to the centre of the shape. In those of the input, a
+// plane far from the origin turns about the origin, hence moves by its angle times the distance:
+// its Gauss-Newton steps are ill-conditioned, its convergence test never settles, and the
+// moments of the point-to-point fit cancel. The matchers and the band test keep the input's
+// coordinates: the queries are moved there and their matches moved back.
+struct Local_frame
+{
+  Eigen::Vector3d center;
+
+  Dplane to_local(const Dplane& p) const { return {p.normal, p.offset - p.normal.dot(center)}; }
+  Dplane to_input(const Dplane& p) const { return {p.normal, p.offset + p.normal.dot(center)}; }
+
+  std::vector<Eigen::Vector3d> to_local(const std::vector<Eigen::Vector3d>& points) const
+  {
+    std::vector<Eigen::Vector3d> result(points.size());
+    std::transform(points.begin(), points.end(), result.begin(), [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(p - center); });
+    return result;
+  }
+
+  Isp_settings to_local(Isp_settings settings) const
+  {
+    if(settings.beyond_band)
+      settings.beyond_band = [band = settings.beyond_band, c = center](const Eigen::Vector3d& p) { return band(p + c); };
+    settings.center = Eigen::Vector3d::Zero();
+    return settings;
+  }
+
+  std::function<bool(const Dplane&)> to_local(const std::function<bool(const Dplane&)>& abandon) const
+  {
+    if(!abandon) return abandon;
+    return [abandon, frame = *this](const Dplane& p) { return abandon(frame.to_input(p)); };
+  }
+};
+
+// A matcher of the input's coordinates queried in local ones (it keeps the input's hints).
+template <typename Matcher>
+class Local_matcher
+{
+public:
+  static constexpr bool has_normals = Matcher::has_normals;
+  typedef typename Matcher::Hint Hint;
+
+  Local_matcher(const Matcher& matcher, const Eigen::Vector3d& center) : matcher_(matcher), center_(center) {}
+
+  Match closest(const Eigen::Vector3d& p, Hint& hint) const
+  {
+    Match match = matcher_.closest(p + center_, hint);
+    match.first -= center_;
+    return match;
+  }
+
+private:
+  const Matcher& matcher_;
+  Eigen::Vector3d center_;
+};
+
 } // namespace isp
 
-// ISP from `plane`: the coarse phase, then the fine phase (see Isp_phase). With a `walk_matcher`
+// ISP from `plane`, in coordinates centred on the shape (the samples, the plane and the matches
+// all in them): the coarse phase, then the fine phase (see Isp_phase). With a `walk_matcher`
 // (approximate and cheaper matches), both phases walk with it, and a few plain steps with the
 // exact `matcher` end the fine phase (`Isp_phase::COARSE` then uses only the walk matcher).
 template <typename Matcher, typename Walk_matcher = Matcher>
-Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane,
-                                      const Matcher& matcher, const Isp_settings& settings,
-                                      Isp_phase phases = Isp_phase::BOTH,
-                                      const std::function<bool(const Dplane&)>& abandon = {},
-                                      const Walk_matcher* walk_matcher = nullptr)
+Isp_result iterative_symmetric_points_from_center(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane,
+                                                  const Matcher& matcher, const Isp_settings& settings,
+                                                  Isp_phase phases, const std::function<bool(const Dplane&)>& abandon,
+                                                  const Walk_matcher* walk_matcher)
 {
   const bool walks = walk_matcher != nullptr;
   // When the walk's matches are hints of the exact search (Closest_triangle_field), the exact
@@ -379,6 +437,26 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   isp::polish(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints), hints,
               width < 1. ? exact_polish_steps : 0, fine);
   return fine;
+}
+
+// ISP from `plane` (see iterative_symmetric_points_from_center()), in the input's coordinates:
+// the fit runs in coordinates relative to settings.center, and its plane comes back in the input's.
+template <typename Matcher, typename Walk_matcher = Matcher>
+Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane,
+                                      const Matcher& matcher, const Isp_settings& settings,
+                                      Isp_phase phases = Isp_phase::BOTH,
+                                      const std::function<bool(const Dplane&)>& abandon = {},
+                                      const Walk_matcher* walk_matcher = nullptr)
+{
+  const isp::Local_frame frame{settings.center};
+  const isp::Local_matcher<Matcher> local_matcher(matcher, frame.center);
+  std::optional<isp::Local_matcher<Walk_matcher>> local_walk_matcher;
+  if(walk_matcher != nullptr) local_walk_matcher.emplace(*walk_matcher, frame.center);
+  Isp_result result = iterative_symmetric_points_from_center(
+    frame.to_local(samples), frame.to_local(plane), local_matcher, frame.to_local(settings), phases,
+    frame.to_local(abandon), local_walk_matcher ? &*local_walk_matcher : nullptr);
+  result.plane = frame.to_input(result.plane);
+  return result;
 }
 
 } // namespace CGAL::Symmetry_transform::internal

@@ -73,6 +73,7 @@ Isp_settings isp_settings(const Grid_settings& grid, unsigned max_iterations, co
   settings.max_iterations = max_iterations;
   settings.threads = grid.threads;
   settings.beyond_band = beyond_band_of(gedt);
+  settings.center = to_eigen(to_dpoint(gedt.center()));
   return settings;
 }
 template <typename GT>

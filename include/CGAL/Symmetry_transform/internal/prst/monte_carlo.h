@@ -41,6 +41,9 @@ inline std::uint32_t stream_seed(unsigned seed, std::size_t piece)
 // The voting estimators draw their samples in chunks of this many, each with its own stream:
 // large enough to amortise the per-chunk vote array, small enough to share the work.
 constexpr std::size_t monte_carlo_chunk = std::size_t(1) << 15;
+// The chunks vote into this many arrays (a bin array each), whatever the thread count: more
+// lanes than cores keep every core busy, each costs an array of the transform's size.
+constexpr std::size_t monte_carlo_lanes = 8;
 
 // The Monte Carlo estimators of the bins of a PRST (see Monte_carlo_estimator): each run_*()
 // fills `values` (n^3 bins) from `samples` samples, the random streams derived from `seed`.
@@ -103,20 +106,26 @@ public:
   }
 
 private:
-  // Sums the votes of `samples` samples, drawn by chunks, each thread into its own array, and
-  // writes them times `scale` into `values`. vote(rng, count, votes) draws `count` samples.
+  // Sums the votes of `samples` samples, drawn by chunks, each with its own random stream, and
+  // writes them times `scale` into `values`. vote(rng, count, votes) draws `count` samples. Chunk
+  // c votes into the array of lane c % monte_carlo_lanes, the lanes in turn added in order: the
+  // sums depend on the seed alone, never on the thread count.
   template <typename Vote>
   void run_votes(std::size_t samples, unsigned seed, unsigned threads, double scale, std::vector<double>& values,
                  const Vote& vote) const
   {
     const std::size_t chunks = (samples + monte_carlo_chunk - 1) / monte_carlo_chunk;
-    threads = unsigned((std::min<std::size_t>)(threads, (std::max<std::size_t>)(chunks, 1)));
-    std::vector<std::vector<double>> votes(threads);
-    parallel_for(chunks, threads, [&](unsigned t, std::size_t begin, std::size_t end) {
-      votes[t].assign(values.size(), 0.);
-      for(std::size_t c = begin; c < end && parallel_step(1); ++c) { // a chunk takes milliseconds
-        Rng rng(stream_seed(seed, c));
-        vote(rng, (std::min)(monte_carlo_chunk, samples - c * monte_carlo_chunk), votes[t]);
+    const std::size_t lanes = (std::min)(monte_carlo_lanes, (std::max<std::size_t>)(chunks, 1));
+    std::vector<std::vector<double>> votes(lanes);
+    threads = unsigned((std::min<std::size_t>)(threads, lanes));
+    parallel_for(chunks, threads, [&](unsigned thread, std::size_t, std::size_t) { // progress in chunks
+      for(std::size_t lane = thread; lane < lanes; lane += threads) {
+        votes[lane].assign(values.size(), 0.);
+        for(std::size_t c = lane; c < chunks; c += lanes) {
+          Rng rng(stream_seed(seed, c));
+          vote(rng, (std::min)(monte_carlo_chunk, samples - c * monte_carlo_chunk), votes[lane]);
+          if(!parallel_step(1)) return; // a chunk takes milliseconds
+        }
       }
     });
     values.assign(values.size(), 0.);

@@ -120,12 +120,12 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
     sines.push_back(std::sin(angle));
   }
   const std::size_t n = samples.size(), none = n;
-  auto add_sample = [&](std::size_t i, Axis_fit_sums& sums, std::size_t& previous) {
+  auto add_sample = [&](std::size_t i, Axis_fit_sums& sums, std::size_t& previous, std::vector<typename Matcher::Hint>& chain) {
     const std::size_t a = (i / chunk) % angles.size();
     const Rotated_sample r = rotated_sample(samples[i], axis, rotations[a], cosines[a], sines[a], t1, t2, settings.radius);
     if(settings.beyond_band && settings.beyond_band(r.image)) return;
-    if(!hints[i].valid && previous != none) hints[i] = hints[previous];
-    const Match match = matcher.closest(r.image, hints[i]);
+    if(!chain[i].valid && previous != none) chain[i] = chain[previous];
+    const Match match = matcher.closest(r.image, chain[i]);
     previous = i;
     const double d2 = (r.image - match.first).squaredNorm();
     sums.support += std::exp(-d2 / (2. * settings.sigma * settings.sigma));
@@ -137,28 +137,33 @@ Axis_fit_sums axis_fit_sums(const std::vector<Eigen::Vector3d>& samples, const D
     sums.jtj += w * j * j.transpose();
     sums.jtr += w * match.second.dot(r.image - match.first) * j;
   };
-  // As ISP: fixed round-robin chunks per thread, so that the sums are reproducible.
+  // As ISP: sums per chunk, added in chunk order. A fit given up stops wherever the threads
+  // are, so it works on a copy of the hints, kept only when the fit is complete: the hints, like
+  // the sums, then depend on the chunks alone, never on the thread count or the timing.
   const std::size_t chunks = (n + chunk - 1) / chunk;
   const unsigned threads =
     unsigned((std::max)(std::size_t(1), (std::min)(std::size_t(settings.threads), n / min_samples_per_thread<Matcher>())));
-  std::vector<Axis_fit_sums> partial(threads);
+  std::vector<Axis_fit_sums> partial(chunks);
+  std::vector<typename Matcher::Hint> updated_hints = hints;
   const double max_lost = double(n) * (1. + give_up_rounding_margin) - reject_below;
   std::atomic<double> lost{0.};
   std::atomic<bool> hopeless{false};
-  parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
+  parallel_for_chunks(chunks, threads, [&](std::size_t c) {
+    if(hopeless.load(std::memory_order_relaxed)) return;
     std::size_t previous = none;
-    for(std::size_t c = thread; c < chunks && !hopeless.load(std::memory_order_relaxed) && parallel_poll(); c += threads) {
-      const std::size_t end = (std::min)((c + 1) * chunk, n);
-      const double before = partial[thread].weight;
-      for(std::size_t i = c * chunk; i < end; ++i) add_sample(i, partial[thread], previous);
-      // (a step can be given up only if it must beat a positive weight: max_lost < n)
-      if(max_lost < double(n) && atomic_add(lost, double(end - c * chunk) - (partial[thread].weight - before)) > max_lost)
-        hopeless = true;
-    }
+    const std::size_t end = (std::min)((c + 1) * chunk, n);
+    for(std::size_t i = c * chunk; i < end; ++i) add_sample(i, partial[c], previous, updated_hints);
+    // (a step can be given up only if it must beat a positive weight: max_lost < n)
+    if(max_lost < double(n) && atomic_add(lost, double(end - c * chunk) - partial[c].weight) > max_lost)
+      hopeless = true;
   });
   Axis_fit_sums total;
+  if(hopeless) {
+    total.weight = -std::numeric_limits<double>::infinity();
+    return total;
+  }
+  hints.swap(updated_hints);
   for(const Axis_fit_sums& s : partial) total += s;
-  if(hopeless) total.weight = -std::numeric_limits<double>::infinity();
   return total;
 }
 
