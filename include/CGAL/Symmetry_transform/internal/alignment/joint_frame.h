@@ -223,9 +223,10 @@ Eigen::Vector3d least_squares_center(const std::array<Frame_plane, 3>& frame_pla
   const double cos_tolerance = std::cos(center_plane_tolerance_degrees * CGAL_PI / 180.);
   Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  // Solved for c - mass_center: offsets far from the origin would cancel in the sums.
   const auto add = [&](const Dplane& p, double w) {
     a += w * p.normal * p.normal.transpose();
-    b += w * p.offset * p.normal;
+    b += w * (p.offset - p.normal.dot(mass_center)) * p.normal;
   };
   for(const Frame_plane& f : frame_planes)
     if(f.principal == searched_plane) add(f.plane, value_of(prst, f.plane));
@@ -237,7 +238,7 @@ Eigen::Vector3d least_squares_center(const std::array<Frame_plane, 3>& frame_pla
       }
   for(const Frame_plane& f : frame_planes) add({f.plane.normal, f.plane.normal.dot(mass_center)}, mass_prior);
   if(std::abs(a.determinant()) < 1e-12) return intersection(frame_planes);
-  return a.ldlt().solve(b);
+  return mass_center + a.ldlt().solve(b);
 }
 
 // The planes ordered by the variance of the mass along their normals, largest first (mode 1), or
