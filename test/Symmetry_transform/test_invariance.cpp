@@ -11,7 +11,7 @@
 // - a triangle soup and a Polyhedron_3 give the planes of the Surface_mesh they are made of.
 // Approximate symmetries (ridges of the transform, not symmetries of the shape) are left out of
 // the comparisons: where a ridge is flat, a change of the input at the rounding level moves the
-// plane ISP stops on (the manual, section Invariance).
+// plane ISP stops on (the manual, section Invariance and Determinism).
 
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/point_symmetry_transform.h>

@@ -214,7 +214,7 @@ struct Segmentation_tree
  *     \cgalParamDefault{6}
  *   \cgalParamNEnd
  *   \cgalParamRandomSeed{the seed of the detection's samples and of the clustering's starts}
- *   \cgalParamThreads{the number of threads\, shared by the segments of a level; the result depends on it only through the rounding of sums}
+ *   \cgalParamThreads{the number of threads\, shared by the segments of a level; it changes speed only, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamNBegin{face_index_map}
  *     \cgalParamDescription{a property map associating to each face of `tm` a unique index between
@@ -231,7 +231,7 @@ struct Segmentation_tree
  * \cgalNamedParamsEnd
  *
  * \returns the number of segments. Every face gets a segment id, and every segment is connected
- * (through edges of the mesh). Deterministic for a given `random_seed` and number of threads.
+ * (through edges of the mesh). Deterministic for a given `random_seed`, whatever the number of threads.
  * \throws std::invalid_argument if the mesh is empty, has a face that is not a triangle, a NaN or
  * infinite coordinate, or only degenerate (zero-area) faces, if `partial_symmetry_fraction` or
  * `smallest_part_fraction` lies out of its range, if a value of `face_feature_map` is not
