@@ -2,14 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Aligns a mesh to its symmetry frame (thesis, section 4.1): computes the centre of symmetry
-// and the principal symmetry axes, prints them next to the classical frame (centre of mass and
-// principal axes, PCA), and writes the mesh moved so that its symmetry frame is the canonical
-// one: centre at the origin, first axis (normal of the strongest plane of symmetry) along x,
-// second along y, third along z.
-//
-// usage: align_to_symmetry_frame [mesh.off|.ply|.obj|.stl] [--resolution N] [--samples N]
-//          [--seed S] [--output FILE.ply|.off]
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -27,6 +20,23 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+
+const char* const usage = R"(usage: align_to_symmetry_frame [MESH] [--resolution N] [--samples N] [--seed S] [--output FILE]
+
+Aligns a mesh to its symmetry frame (thesis, section 4.1): computes the centre of symmetry and the
+principal symmetry axes, prints them next to the classical frame (centre of mass and principal
+axes, PCA), and writes the mesh moved so that its symmetry frame is the canonical one: centre at
+the origin, first axis (normal of the strongest plane of symmetry) along x, second along y, third
+along z.
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/bull.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    GEDT samples and PRST bins per axis (default 64)
+  --samples N       Monte Carlo samples of the PRST (default 500000)
+  --seed S          random seed: the same seed, the same frame (default 0)
+  --output FILE     the moved mesh, .ply or .off (default align_to_symmetry_frame.ply)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef examples::Triangle_soup<K::Point_3> Soup;
@@ -63,12 +73,12 @@ void print_with_pca_frame(const ST::Symmetry_frame<K>& frame, const Soup& soup)
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 64), samples = options.integer("--samples", 500000),
                     seed = options.integer("--seed", 0, 0);
   const std::string output = options.text("--output", "align_to_symmetry_frame.ply");
-  options.reject_unknown();
+  options.validate();
   Soup soup = examples::read_triangle_soup<K::Point_3>(filename); // any mesh file, repaired as a soup
 
   CGAL::Real_timer timer;

@@ -2,15 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Chooses the best views of a mesh from its symmetries (thesis, Section 4.3): finds its principal
-// planes of symmetry, scores each view direction v by S(v) = sum |v.u| M(u) over the planes (unit
-// normals u, symmetry M(u)), prints the best views (local maxima of S: the views wasting the least
-// of the image on mirror-redundant content) and the worst one, and writes the score as a sphere
-// coloured from dark (worst) to bright (best), centred on the mesh and of its radius, to be viewed
-// with the mesh.
-//
-// usage: best_viewpoint [mesh.off|.ply|.obj|.stl] [--resolution N] [--samples N] [--seed S]
-//          [--views K] [--output FILE.ply]
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -35,6 +27,25 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+const char* const usage = R"(usage: best_viewpoint [MESH] [--resolution N] [--samples N] [--seed S] [--views K] [--output FILE]
+
+Chooses the best views of a mesh from its symmetries (thesis, section 4.3): finds its principal
+planes of symmetry, scores each view direction v by S(v) = sum |v.u| M(u) over the planes (unit
+normals u, symmetry M(u)), prints the best views (local maxima of S: the views wasting the least
+of the image on mirror-redundant content) and the worst one, and writes the score as a sphere
+coloured from dark (worst) to bright (best), centred on the mesh and of its radius, to be viewed
+with the mesh.
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/bull.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    GEDT samples and PRST bins per axis of the plane detection (default 64)
+  --samples N       Monte Carlo samples of the PRST (default 500000)
+  --seed S          random seed: the same seed, the same planes (default 0)
+  --views K         how many best views to print (default 5)
+  --output FILE     the score sphere, .ply (default best_viewpoint.ply)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -114,12 +125,12 @@ void write_score_sphere(const std::vector<ST::Principal_symmetry<K>>& symmetries
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 64), samples = options.integer("--samples", 500000),
                     seed = options.integer("--seed", 0, 0), views = options.integer("--views", 5);
   const std::string output = options.text("--output", "best_viewpoint.ply");
-  options.reject_unknown();
+  options.validate();
   const Soup soup = examples::read_triangle_soup<K::Point_3>(filename); // any mesh file, repaired as a soup
 
   // The views are scored by the principal planes: detect them first.

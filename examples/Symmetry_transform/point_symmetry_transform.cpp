@@ -2,10 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Computes the Point Symmetry Transform (PST) of a mesh, prints its centre of symmetry and writes
-// three slices of the transform through that centre, coloured by symmetry.
-//
-// usage: point_symmetry_transform [mesh.off|.ply|.obj|.stl] [--resolution N] [--output FILE.ply]
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -26,6 +23,18 @@
 #include <iomanip>
 #include <iostream>
 #include <vector>
+
+const char* const usage = R"(usage: point_symmetry_transform [MESH] [--resolution N] [--output FILE]
+
+Computes the Point Symmetry Transform (PST) of a mesh, prints its centre of symmetry and writes
+three slices of the transform through that centre, coloured by symmetry.
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/bull.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    GEDT and PST samples per axis (default 64)
+  --output FILE     the three slices, .ply (default point_symmetry_transform.ply)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -81,11 +90,11 @@ void print_centres(const ST::Point_symmetry_transform<K>& pst)
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 64);
   const std::string output = options.text("--output", "point_symmetry_transform.ply");
-  options.reject_unknown();
+  options.validate();
   const examples::Triangle_soup<K::Point_3> soup = examples::read_triangle_soup<K::Point_3>(filename); // repaired
 
   CGAL::Real_timer timer;

@@ -2,15 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Finds the principal symmetries of a mesh (its planes of reflective symmetry, refined), read as
-// a triangle soup from any mesh file (repaired, see input_files.h), prints them with their
-// support and symmetry distance error, and writes one PLY file per plane: the surface with each
-// face coloured by how much the reflection through the plane maps it onto the surface, and the
-// plane drawn as a square.
-//
-// usage: principal_symmetries [mesh.off|.ply|.obj|.stl] [--resolution N] [--planes K]
-//          [--samples N] [--seed S] [--output PREFIX]
-// writes PREFIX_1.ply, PREFIX_2.ply, ... (strongest plane first; a trailing ".ply" of PREFIX is dropped)
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -33,6 +25,25 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+const char* const usage = R"(usage: principal_symmetries [MESH] [--resolution N] [--planes K] [--samples N] [--seed S]
+         [--output PREFIX]
+
+Finds the principal symmetries of a mesh (its planes of reflective symmetry, refined), prints
+them with their support and symmetry distance error, and writes one PLY file per plane: the
+surface with each face coloured by how much the reflection through the plane maps it onto the
+surface, and the plane drawn as a square.
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/bull.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    GEDT samples and PRST bins per axis (default 64)
+  --planes K        at most K planes, strongest first (default 6)
+  --samples N       Monte Carlo samples of the PRST (default 500000)
+  --seed S          random seed: the same seed, the same planes (default 0)
+  --output PREFIX   writes PREFIX_1.ply, PREFIX_2.ply, ..., strongest plane first; a trailing
+                    .ply of PREFIX is dropped (default principal_symmetries)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -92,12 +103,12 @@ void write_planes(const Soup& soup, const std::vector<ST::Principal_symmetry<K>>
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 64), planes = options.integer("--planes", 6),
                     samples = options.integer("--samples", 500000), seed = options.integer("--seed", 0, 0);
   const std::string prefix = examples::without_ply_extension(options.text("--output", "principal_symmetries"));
-  options.reject_unknown();
+  options.validate();
   const Soup soup = examples::read_triangle_soup<K::Point_3>(filename); // any mesh file, repaired as a soup
 
   const auto np = CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples and PRST bins per axis

@@ -2,20 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Finds the principal symmetries of every shape of a collection: mesh files (OFF, PLY, OBJ, STL,
-// read as repaired triangle soups) and point sets (XYZ, PWN, PLY, OFF, LAS, with their normals if
-// they have some). Writes one JSON Lines record per file: its planes with their symmetry, support
-// and symmetry distance error, the time taken, or the error and why. A run that is started again
-// skips the files already recorded; a bad file never stops it (each file is processed in a
-// process of its own); files are processed in parallel, each on one thread, so that the results
-// do not depend on the number of jobs. For a cluster, give each task a shard of the same list
-// (--shard i/n) and an output of its own; concatenate the outputs (see the manual, section
-// "Real-World Input", for a Slurm job array and GNU parallel).
-//
-// usage: principal_symmetries_batch [FILE|FOLDER ...] [--list FILE ...] [--output FILE.jsonl]
-//          [--jobs N] [--shard i/n] [--shrec FOLDER] [--retry-errors] [--timeout SECONDS]
-//          [--memory-limit GIB] [--resolution N] [--planes K] [--samples N] [--sde-samples N]
-//          [--seed S] [--threads-per-shape T]
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include "batch_runner.h"
 #include "command_line_options.h"
@@ -29,6 +16,38 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+const char* const usage = R"(usage: principal_symmetries_batch [FILE|FOLDER ...] [--list FILE ...] [--output FILE.jsonl]
+         [--jobs N] [--shard i/n] [--shrec FOLDER] [--retry-errors] [--timeout SECONDS]
+         [--memory-limit GIB] [--resolution N] [--planes K] [--samples N] [--sde-samples N]
+         [--seed S] [--threads-per-shape T]
+
+Finds the principal symmetries of every shape of a collection: mesh files (OFF, PLY, OBJ, STL,
+read as repaired triangle soups) and point sets (XYZ, PWN, PLY, OFF, LAS, with their normals if
+they have some). Writes one JSON Lines record per file: its planes with their symmetry, support
+and symmetry distance error, the time taken, or the error and why. A run that is started again
+skips the files already recorded; a bad file never stops it (each file is processed in a
+process of its own); files are processed in parallel, each on one thread, so that the results
+do not depend on the number of jobs. For a cluster, give each task a shard of the same list
+(--shard i/n) and an output of its own; concatenate the outputs (see the manual, section
+"Real-World Input", for a Slurm job array and GNU parallel).
+
+  FILE|FOLDER           shape files, and folders searched recursively for them
+  --list FILE           a file listing shapes, a path per line; '#' starts a comment (repeatable)
+  --output FILE.jsonl   the records, appended (default principal_symmetries.jsonl)
+  --jobs N              files processed at once (default: the number of cores)
+  --shard i/n           processes every n-th file from the i-th only, 0 <= i < n (default: all)
+  --shrec FOLDER        also writes a SHREC 2023 result file per shape there (default: none)
+  --retry-errors        processes again the files whose record is an error
+  --timeout SECONDS     stops a file after this time, an error record (default 0: no limit)
+  --memory-limit GIB    the memory of each file's process (default 0: no limit)
+  --resolution N        GEDT samples and PRST bins per axis, at least 8 (default 64)
+  --planes K            at most K planes per shape, strongest first (default 10)
+  --samples N           Monte Carlo samples of the PRST (default 500000)
+  --sde-samples N       samples of the symmetry distance error (default 20000)
+  --seed S              random seed: the same seed, the same planes (default 0)
+  --threads-per-shape T threads of each shape's detection (default 1)
+)";
 
 namespace batch = examples::batch;
 
@@ -72,13 +91,13 @@ std::vector<std::string> files_to_do(const examples::Command_line_options& optio
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv, {"--retry-errors"});
+  const examples::Command_line_options options(argc, argv, usage, {"--retry-errors"});
   const std::string output = options.text("--output", "principal_symmetries.jsonl"), shard = options.text("--shard", "");
   const std::vector<std::string> lists = options.all("--list");
   const bool retry_errors = options.flag("--retry-errors");
   const batch::Settings settings = settings_of(options);
   const batch::Job_limits limits = limits_of(options);
-  options.reject_unknown();
+  options.validate();
   const std::vector<std::string> files = files_to_do(options, lists, shard, output, retry_errors);
   if(files.empty()) return EXIT_SUCCESS;
   if(!settings.shrec_folder.empty()) std::filesystem::create_directories(settings.shrec_folder);

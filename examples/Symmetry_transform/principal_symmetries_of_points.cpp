@@ -2,13 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Finds the principal symmetries of a point set (its planes of reflective symmetry, refined),
-// with the normals of the points if the file has some (most scans do: XYZ with six columns, PWN,
-// PLY with nx ny nz), prints them with their symmetry distance error, and writes the points with
-// each plane drawn as a square, as one PLY file.
-//
-// usage: principal_symmetries_of_points [points.xyz|.pwn|.ply|.off|.las] [--resolution N]
-//          [--planes K] [--samples N] [--seed S] [--ignore-normals] [--output FILE.ply]
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -32,6 +26,24 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+const char* const usage = R"(usage: principal_symmetries_of_points [POINTS] [--resolution N] [--planes K] [--samples N]
+         [--seed S] [--ignore-normals] [--output FILE]
+
+Finds the principal symmetries of a point set (its planes of reflective symmetry, refined), with
+the normals of the points if the file has some (most scans do: XYZ with six columns, PWN, PLY
+with nx ny nz), prints them with their symmetry distance error, and writes the points with each
+plane drawn as a square, as one PLY file.
+
+  POINTS            an XYZ, PWN, PLY, OFF or LAS file; default: points_3/oni.pwn of CGAL's
+                    sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    GEDT samples and PRST bins per axis (default 64)
+  --planes K        at most K planes, strongest first (default 6)
+  --samples N       Monte Carlo samples of the PRST (default 500000)
+  --seed S          random seed: the same seed, the same planes (default 0)
+  --ignore-normals  detects from the points alone, even if the file has normals
+  --output FILE     the points and the planes, .ply (default principal_symmetries_of_points.ply)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef std::pair<K::Point_3, K::Vector_3> Point_with_normal; // as Point_set_processing_3's examples
@@ -82,13 +94,13 @@ std::vector<ST::Principal_symmetry<K>> detect(const std::vector<Point_with_norma
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv, {"--ignore-normals"});
+  const examples::Command_line_options options(argc, argv, usage, {"--ignore-normals"});
   const std::string filename = options.input_file("points_3/oni.pwn");
   const std::size_t resolution = options.integer("--resolution", 64), planes = options.integer("--planes", 6),
                     samples = options.integer("--samples", 500000), seed = options.integer("--seed", 0, 0);
   const std::string output = options.text("--output", "principal_symmetries_of_points.ply");
   const bool ignore_normals = options.flag("--ignore-normals");
-  options.reject_unknown();
+  options.validate();
   const std::vector<Point_with_normal> points = examples::read_point_set<Point_with_normal>(filename,
     CGAL::parameters::point_map(Point_map()).normal_map(Normal_map())); // a file without normals leaves them zero
   const bool with_normals = !ignore_normals && std::any_of(points.begin(), points.end(),

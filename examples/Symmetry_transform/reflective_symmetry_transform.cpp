@@ -2,11 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Computes the Planar Reflective Symmetry Transform (PRST) of a mesh, prints its strongest planes
-// and writes the mesh coloured by the strongest symmetry of any plane through each vertex.
-//
-// usage: reflective_symmetry_transform [mesh.off|.ply|.obj|.stl] [--resolution N] [--planes K]
-//          [--method monte-carlo|exact] [--samples N] [--seed S] [--output FILE.ply]
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -27,6 +23,24 @@
 #include <iterator>
 #include <string>
 #include <vector>
+
+const char* const usage = R"(usage: reflective_symmetry_transform [MESH] [--resolution N] [--planes K]
+         [--method monte-carlo|exact] [--samples N] [--seed S] [--output FILE]
+
+Computes the Planar Reflective Symmetry Transform (PRST) of a mesh, prints its strongest planes
+and writes the mesh coloured by the strongest symmetry of any plane through each vertex.
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/bull.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    GEDT samples and PRST bins (theta, phi, r) per axis (default 64)
+  --planes K        how many of the strongest planes to print (default 5)
+  --method M        monte-carlo, or exact: the exact convolution, a slow reference
+                    (default monte-carlo)
+  --samples N       Monte Carlo samples: the noise falls as 1/sqrt(N) (default 2000000)
+  --seed S          random seed: the same seed, the same transform (default 0)
+  --output FILE     the coloured mesh, .ply (default reflective_symmetry_transform.ply)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -123,13 +137,13 @@ void write_symmetry_through_vertices(const PRST& prst, Mesh mesh, const std::str
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 64), samples = options.integer("--samples", 2000000),
                     seed = options.integer("--seed", 0, 0), planes = options.integer("--planes", 5);
   const ST::Reflective_symmetry_method method = method_of(options.text("--method", "monte-carlo"));
   const std::string output = options.text("--output", "reflective_symmetry_transform.ply");
-  options.reject_unknown();
+  options.validate();
   const examples::Triangle_soup<K::Point_3> soup = examples::read_triangle_soup<K::Point_3>(filename); // repaired
 
   CGAL::Real_timer timer;

@@ -2,16 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Finds the rotational symmetries of a mesh (axes and orders), prints them, and writes
-// - a PLY file: the mesh in grey with each axis drawn as a thin coloured cylinder;
-// - a JSON file with the fields of the BOP benchmark's models_info.json for this object, to
-//   paste into its entry: "symmetries_discrete" (the rotations by 2 pi j / k about each axis of
-//   order k, j = 1 ... k - 1, as row-major 4x4 matrices, translation in the mesh's units) and
-//   "symmetries_continuous" (the axis and a point on it, "offset", of each continuous symmetry).
-//
-// usage: rotational_symmetries [mesh.off|.ply|.obj|.stl] [--resolution N] [--max-order K]
-//          [--seed S] [--output FILE.ply]
-// writes FILE.ply and FILE.json (default rotational_symmetries.ply and .json)
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -32,6 +23,25 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+const char* const usage = R"(usage: rotational_symmetries [MESH] [--resolution N] [--max-order K] [--seed S] [--output FILE]
+
+Finds the rotational symmetries of a mesh (axes and orders), prints them, and writes
+- a PLY file: the mesh in grey with each axis drawn as a thin coloured cylinder;
+- a JSON file with the fields of the BOP benchmark's models_info.json for this object, to
+  paste into its entry: "symmetries_discrete" (the rotations by 2 pi j / k about each axis of
+  order k, j = 1 ... k - 1, as row-major 4x4 matrices, translation in the mesh's units) and
+  "symmetries_continuous" (the axis and a point on it, "offset", of each continuous symmetry).
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/pinion.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    GEDT samples per axis (default 64)
+  --max-order K     orders 2 ... K are tested, K >= 2 (default 12)
+  --seed S          random seed: the same seed, the same axes (default 0)
+  --output FILE     writes FILE.ply and FILE.json; a trailing .ply of FILE is dropped
+                    (default rotational_symmetries)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -78,12 +88,12 @@ void write_axes(const Mesh& mesh, const std::vector<ST::Rotational_symmetry<K>>&
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string filename = options.input_file("meshes/pinion.off");
   const std::size_t resolution = options.integer("--resolution", 64), max_order = options.integer("--max-order", 12, 2),
                     seed = options.integer("--seed", 0, 0);
   const std::string base = examples::without_ply_extension(options.text("--output", "rotational_symmetries"));
-  options.reject_unknown();
+  options.validate();
   const Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
 
   const auto np = CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples per axis

@@ -2,21 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Remeshes a mesh coarsely while keeping its symmetry: finds its principal symmetries (or takes
-// the planes given), runs the symmetric Variational Shape Approximation with K proxies, and
-// compares it with CGAL's plain VSA with K and 2K proxies on the same input (a symmetric proxy
-// may have two patches): geometric error to the input and symmetry error of the output.
-// Writes the symmetric result, and CGAL's with K proxies beside it, as PLY files whose faces
-// are coloured by their symmetry error (dark: symmetric).
-//
-// usage: symmetric_remeshing [mesh.off|.ply|.obj|.stl] [--resolution N] [--planes P]
-//          [--plane a,b,c,d]... [--proxies K] [--alpha A] [--strongest 0|1] [--seed S]
-//          [--verbose 0|1] [--output FILE.ply]
-//   --resolution: grid resolution of the plane detection (default 64)
-//   --planes: how many detected planes to keep (default 1); --plane gives one instead (repeatable)
-//   --alpha: the position weight of the metric (default 0.002, the thesis's); --strongest 1: each face reflected
-//   only through its strongest plane (for several local symmetries)
-//   writes FILE.ply (symmetric VSA) and FILE_cgal_vsa.ply (CGAL's VSA, K proxies)
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -45,6 +31,32 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+const char* const usage = R"(usage: symmetric_remeshing [MESH] [--resolution N] [--planes P] [--plane a,b,c,d]...
+         [--proxies K] [--alpha A] [--strongest 0|1] [--seed S] [--verbose 0|1] [--output FILE]
+
+Remeshes a mesh coarsely while keeping its symmetry: finds its principal symmetries (or takes
+the planes given), runs the symmetric Variational Shape Approximation with K proxies, and
+compares it with CGAL's plain VSA with K and 2K proxies on the same input (a symmetric proxy
+may have two patches): geometric error to the input and symmetry error of the output.
+Writes the symmetric result, and CGAL's with K proxies beside it, as PLY files whose faces
+are coloured by their symmetry error (dark: symmetric).
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/bull.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    grid resolution of the plane detection, at least 8 (default 64)
+  --planes P        how many detected planes to keep (default 1)
+  --plane a,b,c,d   a plane ax + by + cz + d = 0 to use instead of detected ones (repeatable)
+  --proxies K       proxies of the symmetric VSA; CGAL's VSA runs with K and 2K (default 50)
+  --alpha A         the position weight of the metric (default 0.002, the thesis's)
+  --strongest 0|1   1: each face reflected only through its strongest plane, for several
+                    local symmetries (default 0)
+  --seed S          random seed: the same seed, the same mesh (default 0)
+  --verbose 0|1     1: prints the steps of the symmetric VSA (default 0)
+  --output FILE     writes FILE (symmetric VSA) and FILE_cgal_vsa.ply (CGAL's VSA, K proxies)
+                    (default symmetric_remeshing.ply)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -161,15 +173,15 @@ void write_result(const Result& r, const std::vector<K::Plane_3>& planes, double
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 64, 8), planes_kept = options.integer("--planes", 1),
                     proxies = options.integer("--proxies", 50), seed = options.integer("--seed", 0, 0);
   const double alpha = options.real("--alpha", 0.002); // the default of position_weight
-  const bool verbose = options.text("--verbose", "0") == "1", strongest = options.text("--strongest", "0") == "1";
+  const bool verbose = options.integer("--verbose", 0, 0) != 0, strongest = options.integer("--strongest", 0, 0) != 0;
   std::vector<K::Plane_3> planes = planes_of(options.all("--plane"));
   const std::string output = options.text("--output", "symmetric_remeshing.ply");
-  options.reject_unknown();
+  options.validate();
   const Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
   if(planes.empty()) planes = detected_planes(mesh, resolution, planes_kept, seed);
   for(const K::Plane_3& p : planes) std::cout << "  plane " << p << "\n";

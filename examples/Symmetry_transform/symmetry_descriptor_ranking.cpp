@@ -2,17 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Shape retrieval by symmetry descriptors: indexes a folder of meshes (each aligned in its
-// symmetry frame, then described by its PRST and GEDT), ranks them against a query mesh by the
-// combined distance (PRST distance x GEDT distance) and prints the ranked list.
-//
-// usage: symmetry_descriptor_ranking [query.off|.ply|.obj|.stl] [--collection DIR]
-//          [--max-meshes N] [--resolution N] [--samples N] [--seed S] [--index FILE] [--output FILE]
-// --collection: the folder whose .off files are ranked (default: the query's folder), the first
-//   N (--max-meshes, default 12; 0 = all) in sorted order, and the query if it lies there;
-// --index: a file of descriptors, read if present and (re)written when meshes were added to it,
-//   so that a collection is indexed once (entries are keyed by path; a file edited since is not noticed);
-// --output: the ranked list, as text (rank, distances, file).
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/transform.h>
@@ -38,6 +28,28 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+const char* const usage = R"(usage: symmetry_descriptor_ranking [QUERY] [--collection DIR] [--max-meshes N] [--resolution N]
+         [--samples N] [--seed S] [--index FILE] [--output FILE]
+
+Shape retrieval by symmetry descriptors: indexes a folder of meshes (each aligned in its
+symmetry frame, then described by its PRST and GEDT), ranks them against a query mesh by the
+combined distance (PRST distance x GEDT distance) and prints the ranked list.
+
+  QUERY             the query mesh, an OFF, PLY, OBJ or STL file; default: meshes/bull.off of
+                    CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --collection DIR  the folder whose .off files are ranked, and the query if it lies there
+                    (default: the query's folder)
+  --max-meshes N    ranks the first N files of the folder in sorted order; 0: all (default 12)
+  --resolution N    GEDT samples and PRST bins per axis, even, at least 8 (default 32)
+  --samples N       Monte Carlo samples of the PRST (default 200000)
+  --seed S          random seed: the same seed, the same descriptors (default 0)
+  --index FILE      a file of descriptors, read if present and (re)written when meshes were
+                    added to it, so that a collection is indexed once (entries are keyed by
+                    path; a file edited since is not noticed) (default: none)
+  --output FILE     also writes the ranked list there, as text: rank, distances, file
+                    (default: none)
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -158,15 +170,16 @@ void write_text(const std::string& file, const std::string& text)
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv);
+  const examples::Command_line_options options(argc, argv, usage);
   const std::string query = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 32, 8), samples = options.integer("--samples", 200000),
                     seed = options.integer("--seed", 0, 0), max_meshes = options.integer("--max-meshes", 12, 0);
   const std::string parent = fs::path(query).parent_path().string();
   const std::string collection = options.text("--collection", parent.empty() ? "." : parent);
   const std::string index_file = options.text("--index", ""), output = options.text("--output", "");
-  options.reject_unknown();
+  options.validate();
   if(resolution % 2 != 0) throw std::invalid_argument("--resolution must be even");
+  examples::check_exists(query); // before its folder is listed
 
   const auto np = CGAL::parameters::grid_resolution(int(resolution)). // GEDT samples and PRST bins per axis
                                     number_of_samples(samples).       // Monte Carlo samples of the PRST
@@ -177,7 +190,7 @@ try {
   CGAL::Real_timer timer;
   timer.start();
   const std::optional<Descriptor> q = descriptor_of(fs::absolute(query).string(), index, np);
-  if(!q) throw std::runtime_error("cannot describe the query '" + query + "' (" + examples::data_hint() + ")");
+  if(!q) throw std::runtime_error("cannot describe the query '" + query + "'");
   std::vector<std::pair<std::string, Descriptor>> described;
   for(const std::string& file : files)
     if(const std::optional<Descriptor> d = descriptor_of(fs::absolute(file).string(), index, np)) described.emplace_back(file, *d);

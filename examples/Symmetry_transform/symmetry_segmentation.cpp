@@ -2,17 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Segments a mesh into parts that follow its symmetric components (hierarchical splits by the
-// supports of each segment's principal planes), prints the segmentation tree, and writes the
-// mesh with its faces coloured by segment. With --sdf, also runs CGAL's SDF segmentation
-// (CGAL::segmentation_via_sdf_values, default parameters) on the same mesh, for comparison. With
-// --thickness, the shape diameter function (CGAL::sdf_values) is clustered with the planes'
-// supports (named parameter face_feature_map): parts end where the thickness changes.
-//
-// usage: symmetry_segmentation [mesh.off|.ply|.obj|.stl] [--resolution N] [--depth D]
-//          [--segments M] [--planes K] [--lambda L] [--seed S] [--output FILE.ply] [--sdf]
-//          [--thickness] [--verbose]
-// writes FILE.ply (default symmetry_segmentation.ply) and, with --sdf, FILE_sdf.ply
+// What the program does, its arguments and options: `usage` below, which --help prints.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -32,6 +22,30 @@
 #include <iomanip>
 #include <iostream>
 #include <string>
+
+const char* const usage = R"(usage: symmetry_segmentation [MESH] [--resolution N] [--depth D] [--segments M] [--planes K]
+         [--lambda L] [--seed S] [--output FILE] [--sdf] [--thickness] [--verbose]
+
+Segments a mesh into parts that follow its symmetric components (hierarchical splits by the
+supports of each segment's principal planes), prints the segmentation tree, and writes the
+mesh with its faces coloured by segment.
+
+  MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
+                    points merged, degenerate faces removed, polygons triangulated); default:
+                    meshes/bull.off of CGAL's sample data, in the folder $CGAL_DATA_DIR
+  --resolution N    grid resolution of each segment's plane detection (default 32)
+  --depth D         levels of splits (default 3)
+  --segments M      no split beyond M segments (default: no limit)
+  --planes K        principal planes per segment: its features (default 6)
+  --lambda L        weight of the boundary length in the graph cut (default 1)
+  --seed S          random seed: the same seed, the same segments (default 0)
+  --output FILE     the segmented mesh, .ply (default symmetry_segmentation.ply)
+  --sdf             also runs CGAL's SDF segmentation (CGAL::segmentation_via_sdf_values,
+                    default parameters) on the same mesh, for comparison: FILE_sdf.ply
+  --thickness       clusters the shape diameter function (CGAL::sdf_values) with the planes'
+                    supports: parts end where the thickness changes
+  --verbose         prints each split
+)";
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -78,7 +92,7 @@ void compare_with_sdf_segmentation(Mesh& mesh, const std::string& prefix)
 
 int main(int argc, char** argv)
 try {
-  const examples::Command_line_options options(argc, argv, {"--sdf", "--thickness", "--verbose"});
+  const examples::Command_line_options options(argc, argv, usage, {"--sdf", "--thickness", "--verbose"});
   const std::string filename = options.input_file("meshes/bull.off");
   const std::size_t resolution = options.integer("--resolution", 32), depth = options.integer("--depth", 3, 0),
                     segments = options.integer("--segments", ST::Symmetry_segment<K>::none),
@@ -86,7 +100,7 @@ try {
   const double lambda = options.real("--lambda", 1.);
   const bool sdf = options.flag("--sdf"), thickness = options.flag("--thickness"), verbose = options.flag("--verbose");
   const std::string prefix = examples::without_ply_extension(options.text("--output", "symmetry_segmentation.ply"));
-  options.reject_unknown();
+  options.validate();
   Mesh mesh = examples::read_triangle_mesh<Mesh>(filename);
 
   ST::Segmentation_tree<K> tree;

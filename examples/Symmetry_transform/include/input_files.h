@@ -33,17 +33,12 @@
 
 namespace examples {
 
-// Where CGAL's sample data comes from when no file is given.
-inline const char* data_hint()
-{
-  return "with no file given, set CGAL_DATA_DIR to the folder of CGAL's sample data (package libcgal-demo)";
-}
-
-// Throws if `filename` is no file: the user may have meant CGAL's sample data.
+// Throws if `filename` is no file, naming it. (The default file of an example, when none is
+// given, is checked by Command_line_options::validate(), which says where it is looked for.)
 inline void check_exists(const std::string& filename)
 {
-  if(!std::filesystem::is_regular_file(filename))
-    throw std::runtime_error("no such file: '" + filename + "' (" + data_hint() + ")");
+  if(std::filesystem::is_directory(filename)) throw std::runtime_error("'" + filename + "' is a folder, not a file");
+  if(!std::filesystem::is_regular_file(filename)) throw std::runtime_error("no such file: '" + filename + "'");
 }
 
 // The error of a file that can be read but has no polygon: a point set, perhaps.
