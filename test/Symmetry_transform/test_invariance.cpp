@@ -343,6 +343,18 @@ TEST(Position, RefinedPlaneMovesWithAShapeAMillionRadiiAway)
   EXPECT_TRUE(same_planes({far.planes.front()}, {there}, far_cr.center, far_cr.radius));
 }
 
+TEST(Position, AShapeTooFarForItsCoordinatesIsRefusedUnderItsDistance)
+{
+  const Shape<Surface_mesh> s = test_box();
+  const double radius = center_and_radius(s.mesh).radius;
+  const Shape<Surface_mesh> far = moved(s, Motion(CGAL::TRANSLATION, Vector_3(1e10 * radius, 0, 0)));
+  EXPECT_TRUE(throws_with_message<std::invalid_argument>([&] { ST::detect_principal_symmetries(far.mesh, grid_32); },
+                                                         "radii from the origin"));
+  std::vector<Point_3> points(far.mesh.points().begin(), far.mesh.points().end());
+  EXPECT_TRUE(throws_with_message<std::invalid_argument>([&] { ST::symmetry_frame_of_points(points, grid_32); },
+                                                         "radii from the origin"));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Input forms.
 // ---------------------------------------------------------------------------------------------

@@ -131,10 +131,27 @@ std::vector<Dtriangle> triangles_of_soup(const PointRange& points, const Triangl
   return non_degenerate_triangles_of_soup(all_triangles_of_soup(points, triangles, NP_helper::get_const_point_map(points, np)));
 }
 
+// Beyond this distance from the origin, in radii of the shape, a double coordinate is known to
+// less than a millionth of the radius (2^-52 times the distance): the package's tolerances.
+constexpr double farthest_center_in_radii = 1e-6 / 0x1p-52;
+
 inline void check_radius(double radius)
 {
   if(!(radius > 0.))
     throw std::invalid_argument("Symmetry_transform: the input is a single point (zero radius)");
+}
+
+// Refuses a shape so far from the origin for its size that its coordinates cannot hold the
+// answer (DESIGN.md, invariance): it is said, never answered wrongly.
+inline void check_frame(const Dpoint& center, double radius)
+{
+  check_radius(radius);
+  const double distance = std::sqrt(CGAL::squared_distance(center, CGAL::ORIGIN));
+  if(distance > farthest_center_in_radii * radius)
+    throw std::invalid_argument("Symmetry_transform: the input lies " + std::to_string(distance / radius) +
+                                " radii from the origin, beyond the " + std::to_string(farthest_center_in_radii) +
+                                " at which its coordinates hold a millionth of its radius: translate it nearer to "
+                                "the origin first");
 }
 
 // Area-weighted centroid of the surface and largest distance from it to a vertex.
@@ -144,7 +161,7 @@ inline Shape_frame frame_of_triangles(const std::vector<Dtriangle>& triangles)
   double r2 = 0.;
   for(const Dtriangle& t : triangles)
     for(int i = 0; i < 3; ++i) r2 = (std::max)(r2, CGAL::squared_distance(center, t[i]));
-  check_radius(std::sqrt(r2));
+  check_frame(center, std::sqrt(r2));
   return {center, std::sqrt(r2)};
 }
 
@@ -179,7 +196,7 @@ inline Shape_frame frame_of_points(const std::vector<Dpoint>& points)
   const Dpoint center = CGAL::centroid(points.begin(), points.end(), Dkernel(), CGAL::Dimension_tag<0>());
   double r2 = 0.;
   for(const Dpoint& p : points) r2 = (std::max)(r2, CGAL::squared_distance(center, p));
-  check_radius(std::sqrt(r2));
+  check_frame(center, std::sqrt(r2));
   return {center, std::sqrt(r2)};
 }
 
