@@ -11,6 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
@@ -364,13 +365,13 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   using parameters::get_parameter;
   const Reflective_symmetry_method method =
     choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
-  const std::size_t samples =
-    std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), internal::defaults::monte_carlo_pairs));
+  internal::check_named_parameters(np);
+  const std::size_t samples = internal::read_count(np, internal_np::number_of_samples, internal::defaults::monte_carlo_pairs,
+                                                   internal::parameter_ranges::number_of_samples_or_zero);
   const Monte_carlo_estimator estimator =
     choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
-  const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), internal::defaults::random_seed));
-  unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
-                                               internal::default_number_of_threads()));
+  const unsigned seed = internal::read_random_seed(np, internal::defaults::random_seed);
+  const unsigned threads = internal::read_number_of_threads(np);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
 
   if(f.resolution() % 2 != 0)
@@ -384,7 +385,9 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   const auto start = std::chrono::steady_clock::now();
   Reflective_symmetry_transform<GeomTraits> result(f.resolution(), f.center(), f.radius());
   if(method != Reflective_symmetry_method::EXACT && samples == 0)
-    throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
+    throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be an integer in [1, " +
+                                std::to_string(internal::parameter_ranges::number_of_samples.most) +
+                                "] with the Monte Carlo method, not 0");
   internal::with_progress(np, [&] {
     internal::fill_reflective_symmetry(f, method, estimator, samples, seed, (std::max)(1u, threads), result);
     return true;

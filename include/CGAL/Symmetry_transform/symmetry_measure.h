@@ -80,10 +80,7 @@ template <typename NamedParameters>
 double symmetry_distance_error_of_point_set(const std::vector<Dpoint>& points, const Dplane& mirror,
                                             const NamedParameters& np)
 {
-  const std::size_t count = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_points_on_faces),
-                                                         defaults::metric_samples);
-  const unsigned seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), defaults::random_seed);
-  const std::vector<Eigen::Vector3d> samples = point_samples(points, Refinement_sampling{count, seed});
+  const std::vector<Eigen::Vector3d> samples = point_samples(points, metric_sampling(np));
   const Nearest_point nearest(points);
   std::vector<double> d(samples.size());
   parallel_for(samples.size(), metric_threads(np), [&](unsigned, std::size_t begin, std::size_t end) {

@@ -9,6 +9,7 @@
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/viewpoint/score_sphere.h>
 #include <CGAL/Symmetry_transform/internal/viewpoint/view_search.h>
 #include <CGAL/Symmetry_transform/internal/viewpoint/weighted_normals.h>
@@ -80,10 +81,10 @@ OutputIterator best_viewpoints(const SymmetryRange& symmetries, OutputIterator o
                                const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Kernel_of_symmetry_range<SymmetryRange>::type GT;
-  const std::size_t directions = std::size_t(parameters::choose_parameter(
-    parameters::get_parameter(np, internal_np::st_number_of_directions), internal::defaults::viewpoint_directions));
-  if(directions < internal::least_number_of_directions)
-    throw std::invalid_argument("Symmetry_transform: best_viewpoints: number_of_directions must be at least 12");
+  internal::check_named_parameters(np);
+  const std::size_t directions = internal::read_count(np, internal_np::st_number_of_directions,
+                                                      internal::defaults::viewpoint_directions,
+                                                      internal::parameter_ranges::number_of_directions);
   const internal::Weighted_normals planes(symmetries);
   if(planes.normals.empty()) return out;
   for(const internal::Scored_view& view : internal::distinct_views(internal::local_maxima(planes, directions)))
