@@ -349,13 +349,13 @@ auto reflective_symmetry_transform_of_gedt(const MakeGedt& make_gedt, const Name
  *   \cgalParamMonteCarloSamples
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
  *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
- * zero, or `number_of_samples` is 0 with the Monte Carlo method.
+ * zero, `number_of_samples` is 0 with the Monte Carlo method, or a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<GeomTraits>
@@ -416,7 +416,7 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamPrstMethod
@@ -453,7 +453,7 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
@@ -492,7 +492,7 @@ reflective_symmetry_transform_of_points(const PointRange& points, const NamedPar
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  *   \cgalParamPrstMethod

@@ -65,7 +65,7 @@ double viewpoint_score(const SymmetryRange& symmetries, const Vector_3& v)
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{number_of_directions}
  *     \cgalParamDescription{the number of directions of the Fibonacci sphere searched (on the whole
- *       sphere, so about half as many distinct views); at least 12}
+ *       sphere, so about half as many distinct views); from 12 to \f$ 10^7 \f$}
  *     \cgalParamType{`std::size_t`}
  *     \cgalParamDefault{4000}
  *   \cgalParamNEnd
@@ -73,7 +73,7 @@ double viewpoint_score(const SymmetryRange& symmetries, const Vector_3& v)
  *
  * \returns `out` past the views written
  * \throws std::invalid_argument if a plane has a zero normal, a symmetry measure is negative or not
- * finite, or `number_of_directions` is below 12.
+ * finite, or `number_of_directions` lies out of [12, 10^7].
 */
 template <typename SymmetryRange, typename OutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>
