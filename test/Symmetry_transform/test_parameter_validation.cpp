@@ -99,6 +99,8 @@ std::vector<std::pair<std::string, std::function<void()>>> grid_functions(const 
      [&in, np] { ST::gaussian_distance_transform_of_triangle_soup(in.soup_points, in.soup_triangles, np); }},
     {"point_symmetry_transform", [&in, np] { ST::point_symmetry_transform(in.mesh, np); }},
     {"point_symmetry_transform_of_points", [&in, np] { ST::point_symmetry_transform_of_points(in.points, np); }},
+    {"point_symmetry_transform_of_triangle_soup",
+     [&in, np] { ST::point_symmetry_transform_of_triangle_soup(in.soup_points, in.soup_triangles, np); }},
     {"reflective_symmetry_transform", [&in, np] { ST::reflective_symmetry_transform(in.mesh, np); }},
     {"reflective_symmetry_transform_of_points", [&in, np] { ST::reflective_symmetry_transform_of_points(in.points, np); }},
     {"reflective_symmetry_transform_of_triangle_soup",
@@ -125,6 +127,12 @@ std::vector<std::pair<std::string, std::function<void()>>> detection_functions(c
      [&in, np] { ST::symmetry_frame_of_triangle_soup(in.soup_points, in.soup_triangles, np); }},
     {"detect_rotational_symmetries", [&in, np] { ST::detect_rotational_symmetries(in.mesh, np); }},
     {"detect_rotational_symmetries_of_points", [&in, np] { ST::detect_rotational_symmetries_of_points(in.points, np); }},
+    {"rotational_symmetries", [&in, np] { ST::rotational_symmetries(in.mesh, std::vector<ST::Principal_symmetry<K>>(), np); }},
+    {"symmetry_support", [&in, np] {
+       Surface_mesh mesh = in.mesh;
+       auto support = mesh.add_property_map<Surface_mesh::Face_index, double>("f:support", 0.).first;
+       ST::symmetry_support(mesh, x_plane, support, np);
+     }},
     {"segment_by_symmetry", [&in, np] {
        Surface_mesh mesh = in.mesh;
        auto segment = mesh.add_property_map<Surface_mesh::Face_index, std::size_t>("f:segment", 0).first;
@@ -145,6 +153,7 @@ std::vector<std::pair<std::string, std::function<void()>>> metric_functions(cons
      [&in, np] { ST::symmetry_distance_error_of_triangle_soup(in.soup_points, in.soup_triangles, x_plane, np); }},
     {"symmetry_error", [&in, np] { ST::symmetry_error(in.mesh, x_plane, np); }},
     {"approximation_error", [&in, np] { ST::approximation_error(in.mesh, in.mesh, np); }},
+    {"symmetry_error with a reference", [&in, np] { ST::symmetry_error(in.mesh, x_plane, in.mesh, 0.1, np); }},
   };
 }
 
@@ -211,6 +220,11 @@ TEST(ParameterValidation, NegativeOrHugeThreadCountsAreRefusedAndZeroMeansTheDef
   expect_all_refuse(grid_functions(small().number_of_threads(-1)), "number_of_threads");
   expect_all_refuse(detection_functions(small().number_of_threads(-1)), "number_of_threads");
   expect_all_refuse(metric_functions(params::number_of_threads(-1)), "number_of_threads");
+  EXPECT_TRUE(refused([] {
+    Surface_mesh mesh = inputs().mesh;
+    auto error = mesh.add_property_map<Surface_mesh::Face_index, double>("f:error", 0.).first;
+    ST::face_symmetry_errors(mesh, x_plane, error, params::number_of_threads(-1));
+  }, "number_of_threads"));
   expect_all_refuse(grid_functions(small().number_of_threads(100000)), "number_of_threads");
   // The number of threads changes the speed only: 0 (the default), 1 and 3 give the same grid.
   const st_test::Grid one = ST::gaussian_distance_transform(inputs().mesh, small().number_of_threads(1));
