@@ -12,6 +12,7 @@
 
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -89,8 +90,9 @@ namespace parameter_ranges {
 
 constexpr std::uintmax_t unbounded = (std::numeric_limits<std::uintmax_t>::max)();
 
-// Samples and iterations: beyond these, a call would run for hours (ISP and the metrics
-// reflect each sample in every iteration; a Monte Carlo sample costs about 0.1 microsecond).
+// Samples and iterations: bounds far above any useful value (the defaults are 5000 to 2e6
+// samples and 20 iterations), that keep a mistaken one (a negative number cast to an unsigned
+// type) from running for days or exhausting the memory.
 constexpr Count_range number_of_samples{"number_of_samples", 1, 10000000000ull};
 // With the exact method, which draws no sample, 0 is accepted.
 constexpr Count_range number_of_samples_or_zero{"number_of_samples", 0, 10000000000ull};
