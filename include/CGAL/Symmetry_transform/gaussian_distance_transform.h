@@ -64,7 +64,7 @@ Voxel_grid<GT> cancellable_gaussian_distance_transform_of_triangles(const std::v
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
@@ -74,8 +74,8 @@ Voxel_grid<GT> cancellable_gaussian_distance_transform_of_triangles(const std::v
  * and whose `radius()` is the largest distance from it to a vertex of a non-degenerate face.
  *
  * \throws std::invalid_argument if the mesh has no face, a face that is not a triangle, only
- * degenerate faces, a coordinate that is NaN or infinite, or if the grid parameters are invalid
- * or the grid does not fit in memory.
+ * degenerate faces, a coordinate that is NaN or infinite, or if a numeric named parameter lies out
+ * of its range: `grid_resolution` from 8 to the largest whose transforms fit in 3/4 of the physical memory.
 */
 template <typename TriangleMesh,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -104,7 +104,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
@@ -115,7 +115,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
  * `radius()` is the largest distance from it to a point.
  *
  * \throws std::invalid_argument if the range is empty, all its points coincide, a coordinate is
- * NaN or infinite, or if the grid parameters are invalid or the grid does not fit in memory.
+ * NaN or infinite, or if a numeric named parameter lies out of its range (as `gaussian_distance_transform()`).
 */
 template <typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -154,7 +154,7 @@ gaussian_distance_transform_of_points(const PointRange& points,
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{the grid of the same geometry\, all its values zero}
@@ -165,7 +165,7 @@ gaussian_distance_transform_of_points(const PointRange& points,
  *
  * \throws std::invalid_argument if a triangle refers to a point out of range or has not three
  * corners, if there is no triangle or only degenerate ones, if a corner has a NaN or infinite
- * coordinate, or if the grid parameters are invalid or the grid does not fit in memory.
+ * coordinate, or if a numeric named parameter lies out of its range (as `gaussian_distance_transform()`).
 */
 template <typename PointRange, typename TriangleRange,
           typename NamedParameters = parameters::Default_named_parameters>

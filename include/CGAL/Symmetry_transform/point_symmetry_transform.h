@@ -209,7 +209,7 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}
@@ -240,7 +240,7 @@ point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = par
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
@@ -275,7 +275,7 @@ point_symmetry_transform_of_points(const PointRange& points, const NamedParamete
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{a transform whose values are all zero\, its centre of symmetry the centre of the grid}

@@ -48,7 +48,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamRandomSeed{the seed of the surface samples}
  *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
@@ -56,7 +56,7 @@ namespace CGAL::Symmetry_transform {
  *
  * \returns the principal symmetries, strongest first.
  * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform()`, or if
- * `number_of_refinement_samples` is 0.
+ * a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
@@ -101,7 +101,7 @@ principal_symmetries(
  *   \cgalParamRandomSeed{the seed of the surface samples and of the transform}
  *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
@@ -109,7 +109,7 @@ principal_symmetries(
  *
  * \returns the principal symmetries, strongest first.
  * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform()` and
- * `reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
+ * `reflective_symmetry_transform()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
@@ -147,7 +147,7 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
  *   \cgalParamRandomSeed{the seed of the points that ISP reflects and of the transform}
  *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{if given\, ISP fits the plane point to plane with the normal of the point nearest to each
  *                       mirror image\, whose orientation does not matter; a zero normal leaves its point out of the fit}
@@ -157,7 +157,7 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
  *
  * \returns the principal symmetries, strongest first.
  * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform_of_points()`
- * and `reflective_symmetry_transform()`, a NaN or infinite normal, or if `number_of_refinement_samples` is 0.
+ * and `reflective_symmetry_transform()`, a NaN or infinite normal, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
@@ -210,7 +210,7 @@ typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typen
  *   \cgalParamIspIterations
  *   \cgalParamRandomSeed{the seed of the surface samples}
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{`plane` unchanged}
@@ -219,7 +219,7 @@ typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typen
  * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected
  * sample lies near the surface.
  * \throws std::invalid_argument if `plane` is degenerate, on the bad inputs of
- * `gaussian_distance_transform()`, or if `number_of_refinement_samples` is 0.
+ * `gaussian_distance_transform()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3
@@ -251,7 +251,7 @@ refine_symmetry_plane(const TriangleMesh& tm,
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
@@ -309,7 +309,7 @@ double symmetry_support(const TriangleMesh& tm,
  *   \cgalParamRandomSeed{the seed of the surface samples and of the transform}
  *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{the planes accepted before the cancel\, strongest first (none if it came before the refinements)}
@@ -317,7 +317,7 @@ double symmetry_support(const TriangleMesh& tm,
  *
  * \returns the principal symmetries, strongest first.
  * \throws std::invalid_argument on the bad inputs of `gaussian_distance_transform_of_triangle_soup()`
- * and `reflective_symmetry_transform()`, or if `number_of_refinement_samples` is 0.
+ * and `reflective_symmetry_transform()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
 std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
@@ -349,7 +349,7 @@ detect_principal_symmetries_of_triangle_soup(const PointRange& points, const Tri
  *   \cgalParamIspIterations
  *   \cgalParamRandomSeed{the seed of the surface samples}
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{`plane` unchanged}
@@ -358,7 +358,7 @@ detect_principal_symmetries_of_triangle_soup(const PointRange& points, const Tri
  * \returns the refined plane, with a unit normal; `plane` itself (normalised) if no reflected
  * sample lies near the surface.
  * \throws std::invalid_argument if `plane` is degenerate, on the bad inputs of
- * `gaussian_distance_transform_of_triangle_soup()`, or if `number_of_refinement_samples` is 0.
+ * `gaussian_distance_transform_of_triangle_soup()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
 typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3
@@ -391,7 +391,7 @@ refine_symmetry_plane_of_triangle_soup(
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd

@@ -11,6 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
@@ -348,13 +349,13 @@ auto reflective_symmetry_transform_of_gedt(const MakeGedt& make_gedt, const Name
  *   \cgalParamMonteCarloSamples
  *   \cgalParamMonteCarloEstimator
  *   \cgalParamRandomSeed{the seed of the Monte Carlo samples: equal seeds and thread counts give identical results}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVerbose{whether to print the time taken on `std::cerr`}
  *   \cgalParamCallback{a transform of the same bins whose values are all zero}
  * \cgalNamedParamsEnd
  *
  * \throws std::invalid_argument if the resolution of `f` is odd, `f` is zero everywhere, its radius is
- * zero, or `number_of_samples` is 0 with the Monte Carlo method.
+ * zero, `number_of_samples` is 0 with the Monte Carlo method, or a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
 Reflective_symmetry_transform<GeomTraits>
@@ -364,13 +365,13 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   using parameters::get_parameter;
   const Reflective_symmetry_method method =
     choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
-  const std::size_t samples =
-    std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), internal::defaults::monte_carlo_pairs));
+  internal::check_named_parameters(np);
+  const std::size_t samples = internal::read_count(np, internal_np::number_of_samples, internal::defaults::monte_carlo_pairs,
+                                                   internal::parameter_ranges::number_of_samples_or_zero);
   const Monte_carlo_estimator estimator =
     choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
-  const unsigned seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), internal::defaults::random_seed));
-  unsigned threads = unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
-                                               internal::default_number_of_threads()));
+  const unsigned seed = internal::read_random_seed(np, internal::defaults::random_seed);
+  const unsigned threads = internal::read_number_of_threads(np);
   const bool verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
 
   if(f.resolution() % 2 != 0)
@@ -384,7 +385,9 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
   const auto start = std::chrono::steady_clock::now();
   Reflective_symmetry_transform<GeomTraits> result(f.resolution(), f.center(), f.radius());
   if(method != Reflective_symmetry_method::EXACT && samples == 0)
-    throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be positive");
+    throw std::invalid_argument("reflective_symmetry_transform: number_of_samples must be an integer in [1, " +
+                                std::to_string(internal::parameter_ranges::number_of_samples.most) +
+                                "] with the Monte Carlo method, not 0");
   internal::with_progress(np, [&] {
     internal::fill_reflective_symmetry(f, method, estimator, samples, seed, (std::max)(1u, threads), result);
     return true;
@@ -413,7 +416,7 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamPrstMethod
@@ -450,7 +453,7 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the GEDT is the distance to the points, whatever their normals}
  *   \cgalParamGeomTraits
@@ -489,7 +492,7 @@ reflective_symmetry_transform_of_points(const PointRange& points, const NamedPar
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  *   \cgalParamPrstMethod

@@ -64,7 +64,7 @@ struct Approximation_error
  *     \cgalParamDefault{20000}
  *   \cgalParamNEnd
  *   \cgalParamRandomSeed{the seed of the samples of both meshes: the result is deterministic for a seed}
- *   \cgalParamThreads{the threads that match the samples of each mesh to their closest points (the result does not depend on it)}
+ *   \cgalParamThreads{the threads that match the samples of each mesh to their closest points\, at most 1024 (0: the default); they change the speed only\, never the result}
  * \cgalNamedParamsEnd
  *
  * \cgalNamedParamsBegin{Named Parameters of np2}
@@ -77,7 +77,7 @@ struct Approximation_error
  *
  * \returns the root mean square and the largest of the distances of both sets of samples.
  * \throws std::invalid_argument if a mesh has no face, a face that is not a triangle, a non-finite
- * coordinate, or only degenerate faces.
+ * coordinate, or only degenerate faces, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh1, typename TriangleMesh2, typename NamedParameters1 = parameters::Default_named_parameters,
           typename NamedParameters2 = parameters::Default_named_parameters>
@@ -115,13 +115,13 @@ Approximation_error approximation_error(const TriangleMesh1& tm1, const Triangle
  *     \cgalParamDefault{20000}
  *   \cgalParamNEnd
  *   \cgalParamRandomSeed{the seed of the samples: the result is deterministic for a seed}
- *   \cgalParamThreads{the threads that match the reflected samples to their closest points (the result does not depend on it)}
+ *   \cgalParamThreads{the threads that match the reflected samples to their closest points\, at most 1024 (0: the default); they change the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
  *
  * \returns the root mean square distance, in the units of the mesh.
- * \throws std::invalid_argument if `plane` is degenerate, or on the bad meshes of `approximation_error()`.
+ * \throws std::invalid_argument if `plane` is degenerate, or on the bad meshes and parameters of `approximation_error()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_error(const TriangleMesh& tm,
@@ -159,7 +159,7 @@ double symmetry_error(const TriangleMesh& tm,
  * \cgalNamedParamsBegin{Named Parameters of np1}
  *   \cgalParamGeomTraits
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
- *   \cgalParamThreads{the threads that match the reflected samples\, on `tm` and on `reference`\, to their closest points (the result does not depend on it)}
+ *   \cgalParamThreads{the threads that match the reflected samples\, on `tm` and on `reference`\, to their closest points\, at most 1024 (0: the default); they change the speed only\, never the result}
  *   \cgalParamNBegin{number_of_points_on_faces}
  *     \cgalParamDescription{the number of samples of `tm`}
  *     \cgalParamType{`std::size_t`}
@@ -215,7 +215,7 @@ double symmetry_error(const TriangleMesh& tm,
  * \cgalNamedParamsBegin
  *   \cgalParamGeomTraits
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
- *   \cgalParamThreads{the number of threads that look for the points of `tm` nearest to the reflected centroids; the result does not depend on it}
+ *   \cgalParamThreads{the number of threads that look for the points of `tm` nearest to the reflected centroids\, at most 1024 (0: the default); they change the speed only\, never the result}
  * \cgalNamedParamsEnd
  *
  * \returns the largest distance.

@@ -78,7 +78,7 @@ namespace CGAL::Symmetry_transform {
  *   \cgalParamRandomSeed{the seed of the surface samples}
  *   \cgalParamVerbose{whether to print each candidate and its refinement on `std::cerr`}
  *   \cgalParamsGrid{64,at least 8 and more than 12 times the Gaussian width; its width \f$ \sigma \f$ sets the Gaussian weights of the refinement}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamCallback{an empty vector}
@@ -88,7 +88,7 @@ namespace CGAL::Symmetry_transform {
  * decimals (the measures of exact symmetries differ by their interpolation errors, about
  * \f$ 10^{-4} \f$), then continuous ones first and by decreasing order (the main axis of a gear
  * before its flips), then by decreasing `symmetry`.
- * \throws std::invalid_argument if `max_order` is below 2, or on the bad inputs of
+ * \throws std::invalid_argument if `max_order` lies out of [2, 1000] or another numeric named parameter out of its range, or on the bad inputs of
  * `gaussian_distance_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
@@ -124,7 +124,7 @@ detect_rotational_symmetries(const TriangleMesh& tm, const NamedParameters& np =
  * `detect_rotational_symmetries()`
  *
  * \returns the rotational symmetries, strongest first.
- * \throws std::invalid_argument if a plane is degenerate, `max_order` is below 2, or on the bad
+ * \throws std::invalid_argument if a plane is degenerate, `max_order` lies out of [2, 1000] or another numeric named parameter out of its range, or on the bad
  * inputs of `gaussian_distance_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
@@ -170,7 +170,7 @@ rotational_symmetries(
  * \cgalNamedParamsEnd
  *
  * \returns the rotational symmetries, strongest first.
- * \throws std::invalid_argument if `max_order` is below 2, or on the bad inputs of
+ * \throws std::invalid_argument if `max_order` lies out of [2, 1000] or another numeric named parameter out of its range, or on the bad inputs of
  * `gaussian_distance_transform_of_points()`.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>

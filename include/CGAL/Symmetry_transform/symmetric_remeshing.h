@@ -127,7 +127,7 @@ bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const
  *     \cgalParamDefault{`false`}
  *   \cgalParamNEnd
  *   \cgalParamRandomSeed{the seed of `RANDOM` seeding: the result is deterministic for a seed}
- *   \cgalParamThreads{the threads of the mirror-face queries (the result does not depend on it)}
+ *   \cgalParamThreads{the threads of the mirror-face queries\, at most 1024 (0: the default); they change the speed only\, never the result}
  *   \cgalParamVerbose{whether to print the main steps and their times on `std::cerr`}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamNBegin{vertex_index_map}
@@ -205,8 +205,8 @@ bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const
  * `false` if no output of the mesh (`anchors`, `triangles`, `output_mesh`) is asked for.
  * \throws std::invalid_argument if `tm` has no face, a face that is not a triangle, a non-finite
  * coordinate or only degenerate faces; if an index map does not give distinct indices below
- * `num_vertices(tm)` or `num_faces(tm)`; if a plane is degenerate or there are more than 64; if `max_number_of_proxies` is given as 0; if `position_weight` lies
- * outside \f$ [0,1] \f$.
+ * `num_vertices(tm)` or `num_faces(tm)`; if a plane is degenerate or there are more than 64; if a numeric named parameter lies out of its range (the message names it and the range)
+ * (`max_number_of_proxies` given as 0, `position_weight` outside \f$ [0,1] \f$, ...).
 */
 template <typename TriangleMesh, typename PlaneRange, typename NamedParameters = parameters::Default_named_parameters>
 bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRange& planes,

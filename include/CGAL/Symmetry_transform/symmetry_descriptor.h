@@ -225,7 +225,7 @@ double descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symme
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{32,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  *   \cgalParamPrstMethod
@@ -262,7 +262,7 @@ symmetry_descriptor(const TriangleMesh& tm, const NamedParameters& np = paramete
  *
  * \cgalNamedParamsBegin
  *   \cgalParamsGrid{32,at least 8 and more than 12 times the Gaussian width; even}
- *   \cgalParamThreads{the number of threads}
+ *   \cgalParamThreads{the number of threads\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  *   \cgalParamPrstMethod

@@ -80,10 +80,7 @@ template <typename NamedParameters>
 double symmetry_distance_error_of_point_set(const std::vector<Dpoint>& points, const Dplane& mirror,
                                             const NamedParameters& np)
 {
-  const std::size_t count = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_points_on_faces),
-                                                         defaults::metric_samples);
-  const unsigned seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), defaults::random_seed);
-  const std::vector<Eigen::Vector3d> samples = point_samples(points, Refinement_sampling{count, seed});
+  const std::vector<Eigen::Vector3d> samples = point_samples(points, metric_sampling(np));
   const Nearest_point nearest(points);
   std::vector<double> d(samples.size());
   parallel_for(samples.size(), metric_threads(np), [&](unsigned, std::size_t begin, std::size_t end) {
@@ -199,14 +196,14 @@ inline double symmetry_transform_value(double symmetry_measure)
  * \cgalNamedParamsBegin
  *   \cgalParamDistanceSamples{the number \f$ N \f$ of surface samples}
  *   \cgalParamRandomSeed{the seed of the samples: the result is deterministic for a seed}
- *   \cgalParamThreads{the threads that match the reflected samples to their closest points (the result does not depend on it)}
+ *   \cgalParamThreads{the threads that match the reflected samples to their closest points\, at most 1024 (0: the default); they change the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
  *
  * \returns the SDE, a fraction of the diagonal (0.01: 1 % of it).
  * \throws std::invalid_argument if `plane` is degenerate, the mesh has no face, a face that is not
- * a triangle, only degenerate faces, or a NaN or infinite coordinate.
+ * a triangle, only degenerate faces, or a NaN or infinite coordinate, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_distance_error(const TriangleMesh& tm,
@@ -235,14 +232,14 @@ double symmetry_distance_error(const TriangleMesh& tm,
  * \cgalNamedParamsBegin
  *   \cgalParamDistanceSamples{the number \f$ N \f$ of surface samples}
  *   \cgalParamRandomSeed{the seed of the samples: the result is deterministic for a seed}
- *   \cgalParamThreads{the threads that match the reflected samples to their closest points (the result does not depend on it)}
+ *   \cgalParamThreads{the threads that match the reflected samples to their closest points\, at most 1024 (0: the default); they change the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamGeomTraits
  * \cgalNamedParamsEnd
  *
  * \returns the SDE, a fraction of the diagonal.
  * \throws std::invalid_argument if `plane` is degenerate, or on the bad soups of
- * `gaussian_distance_transform_of_triangle_soup()`.
+ * `gaussian_distance_transform_of_triangle_soup()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_distance_error_of_triangle_soup(
@@ -275,7 +272,7 @@ double symmetry_distance_error_of_triangle_soup(
  * \cgalNamedParamsBegin
  *   \cgalParamDistanceSamples{the number \f$ N \f$ of points reflected}
  *   \cgalParamRandomSeed{the seed of the subset of the points: the result is deterministic for a seed}
- *   \cgalParamThreads{the threads that look for the nearest points (the result does not depend on it)}
+ *   \cgalParamThreads{the threads that look for the nearest points\, at most 1024 (0: the default); they change the speed only\, never the result}
  *   \cgalParamPointMap
  *   \cgalParamNormalMap{not read: the distance is to the nearest point}
  *   \cgalParamGeomTraits
@@ -283,7 +280,7 @@ double symmetry_distance_error_of_triangle_soup(
  *
  * \returns the SDE, a fraction of the diagonal.
  * \throws std::invalid_argument if `plane` is degenerate, the range is empty, all its points
- * coincide, or a coordinate is NaN or infinite.
+ * coincide, or a coordinate is NaN or infinite, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_distance_error_of_points(

@@ -214,7 +214,7 @@ struct Segmentation_tree
  *     \cgalParamDefault{6}
  *   \cgalParamNEnd
  *   \cgalParamRandomSeed{the seed of the detection's samples and of the clustering's starts}
- *   \cgalParamThreads{the number of threads\, shared by the segments of a level; it changes speed only, never the result}
+ *   \cgalParamThreads{the number of threads\, shared by the segments of a level\, at most 1024 (0: the default); it changes the speed only\, never the result}
  *   \cgalParamVertexPointMap{tm,TriangleMesh}
  *   \cgalParamNBegin{face_index_map}
  *     \cgalParamDescription{a property map associating to each face of `tm` a unique index between
@@ -233,8 +233,8 @@ struct Segmentation_tree
  * \returns the number of segments. Every face gets a segment id, and every segment is connected
  * (through edges of the mesh). Deterministic for a given `random_seed`, whatever the number of threads.
  * \throws std::invalid_argument if the mesh is empty, has a face that is not a triangle, a NaN or
- * infinite coordinate, or only degenerate (zero-area) faces, if `partial_symmetry_fraction` or
- * `smallest_part_fraction` lies out of its range, if a value of `face_feature_map` is not
+ * infinite coordinate, or only degenerate (zero-area) faces, if a numeric named parameter lies out of its range (the message names it and the range) (e.g.
+ * `partial_symmetry_fraction` or `smallest_part_fraction`), if a value of `face_feature_map` is not
  * finite, or on the other bad inputs of
  * `detect_principal_symmetries()` (e.g. a grid resolution too small).
 */

@@ -9,6 +9,7 @@
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/viewpoint/score_sphere.h>
 #include <CGAL/Symmetry_transform/internal/viewpoint/view_search.h>
 #include <CGAL/Symmetry_transform/internal/viewpoint/weighted_normals.h>
@@ -64,7 +65,7 @@ double viewpoint_score(const SymmetryRange& symmetries, const Vector_3& v)
  * \cgalNamedParamsBegin
  *   \cgalParamNBegin{number_of_directions}
  *     \cgalParamDescription{the number of directions of the Fibonacci sphere searched (on the whole
- *       sphere, so about half as many distinct views); at least 12}
+ *       sphere, so about half as many distinct views); from 12 to \f$ 10^7 \f$}
  *     \cgalParamType{`std::size_t`}
  *     \cgalParamDefault{4000}
  *   \cgalParamNEnd
@@ -72,7 +73,7 @@ double viewpoint_score(const SymmetryRange& symmetries, const Vector_3& v)
  *
  * \returns `out` past the views written
  * \throws std::invalid_argument if a plane has a zero normal, a symmetry measure is negative or not
- * finite, or `number_of_directions` is below 12.
+ * finite, or `number_of_directions` lies out of [12, 10^7].
 */
 template <typename SymmetryRange, typename OutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -80,10 +81,10 @@ OutputIterator best_viewpoints(const SymmetryRange& symmetries, OutputIterator o
                                const NamedParameters& np = parameters::default_values())
 {
   typedef typename internal::Kernel_of_symmetry_range<SymmetryRange>::type GT;
-  const std::size_t directions = std::size_t(parameters::choose_parameter(
-    parameters::get_parameter(np, internal_np::st_number_of_directions), internal::defaults::viewpoint_directions));
-  if(directions < internal::least_number_of_directions)
-    throw std::invalid_argument("Symmetry_transform: best_viewpoints: number_of_directions must be at least 12");
+  internal::check_named_parameters(np);
+  const std::size_t directions = internal::read_count(np, internal_np::st_number_of_directions,
+                                                      internal::defaults::viewpoint_directions,
+                                                      internal::parameter_ranges::number_of_directions);
   const internal::Weighted_normals planes(symmetries);
   if(planes.normals.empty()) return out;
   for(const internal::Scored_view& view : internal::distinct_views(internal::local_maxima(planes, directions)))

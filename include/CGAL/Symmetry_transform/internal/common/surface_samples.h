@@ -10,6 +10,7 @@
 
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -54,16 +55,15 @@ struct Refinement_sampling
 template <typename NamedParameters>
 Refinement_sampling refinement_sampling(const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  return {std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples),
-                                       defaults::refinement_samples)),
-          unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), defaults::random_seed))};
+  return {read_sample_count(np, internal_np::st_number_of_refinement_samples, defaults::refinement_samples,
+                            parameter_ranges::number_of_refinement_samples),
+          read_random_seed(np, defaults::random_seed)};
 }
 
+// The count of a sampling made in code (the readers check the user's).
 inline void check_refinement_samples(const Refinement_sampling& sampling)
 {
-  if(sampling.count == 0) throw std::invalid_argument("Symmetry_transform: number_of_refinement_samples must be positive");
+  if(sampling.count == 0) throw std::invalid_argument("Symmetry_transform: no sample to draw");
 }
 
 // Area-uniform random samples of the triangles, from the seed alone. (CGAL 5.5's

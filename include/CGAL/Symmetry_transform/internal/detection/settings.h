@@ -13,6 +13,7 @@
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
@@ -41,25 +42,25 @@ struct Detection_settings
 template <typename NamedParameters>
 Candidate_settings candidate_settings(const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  return {std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), defaults::max_number_of_planes)),
-          double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), defaults::symmetry_threshold)),
-          double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), defaults::laplacian_threshold)),
-          choose_parameter(get_parameter(np, internal_np::verbose), false)};
+  namespace r = parameter_ranges;
+  return {read_count(np, internal_np::st_max_number_of_planes, defaults::max_number_of_planes, r::max_number_of_planes),
+          read_real(np, internal_np::st_symmetry_threshold, defaults::symmetry_threshold, r::symmetry_threshold),
+          read_real(np, internal_np::st_laplacian_threshold, defaults::laplacian_threshold, r::laplacian_threshold),
+          parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
 }
 
 template <typename NamedParameters>
 unsigned isp_iterations(const NamedParameters& np)
 {
-  return unsigned(parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_iterations),
-                                               defaults::isp_iterations));
+  return unsigned(read_count(np, internal_np::number_of_iterations, defaults::isp_iterations,
+                             parameter_ranges::number_of_iterations));
 }
 
 template <typename NamedParameters>
 Detection_settings detection_settings(const NamedParameters& np)
 {
-  return {grid_options(np), refinement_sampling(np), isp_iterations(np), candidate_settings(np)};
+  const Grid_options grid = grid_options(np); // first: it checks all the numeric parameters
+  return {grid, refinement_sampling(np), isp_iterations(np), candidate_settings(np)};
 }
 
 // The settings of ISP on a shape whose GEDT `gedt` was made with `grid`; they refer to `gedt`

@@ -7,6 +7,7 @@
 
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
@@ -15,37 +16,15 @@
 #include <stdexcept>
 #include <string>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <unistd.h>
-#endif
-
 namespace CGAL::Symmetry_transform::internal {
 
 // Beyond this many standard deviations the Gaussian is set to zero: exp(-4.5) = 1.1%, and
 // the energy lost, erfc(3) ~ 2e-5 of the total, is far below the discretisation error.
 constexpr double gaussian_cutoff_in_sigmas = 3.;
-// Below 8 samples per axis a grid cannot hold a shape and its band.
-constexpr long min_grid_resolution = 8;
-// A grid may take at most this fraction of the physical memory: the rest for the system and
-// the other allocations of the computation.
-constexpr double max_memory_fraction = 0.75;
-// The memory assumed where the system cannot tell (64 GiB).
-constexpr double assumed_memory_bytes = 64. * 1024. * 1024. * 1024.;
 
-inline void check_memory(double bytes, const std::string& what)
-{
-  double available = assumed_memory_bytes;
-#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
-  available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
-#endif
-  if(bytes > max_memory_fraction * available)
-    throw std::invalid_argument("Symmetry_transform: " + what + " needs " +
-                                std::to_string(bytes / (1024. * 1024. * 1024.)) +
-                                " GiB, more than this machine's memory: lower grid_resolution");
-}
-
-// The grid's named parameters as the user gave them (read by grid_options(); checked by
-// grid_settings(), once the size of the shape is known).
+// The grid's named parameters, each checked by grid_options() (with all the other numeric named
+// parameters of the call: it is the first reader of most functions); their relation is checked
+// by grid_settings().
 struct Grid_options
 {
   long resolution;
@@ -58,13 +37,13 @@ struct Grid_options
 template <typename NamedParameters>
 Grid_options grid_options(const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  return {long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), defaults::grid_resolution)),
-          double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), defaults::gaussian_width)),
+  namespace r = parameter_ranges;
+  check_named_parameters(np);
+  const unsigned threads = read_number_of_threads(np);
+  return {read_grid_resolution(np, defaults::grid_resolution, threads),
+          read_real(np, internal_np::st_gaussian_width, defaults::gaussian_width, r::gaussian_width),
           parameters::is_default_parameter<NamedParameters, internal_np::st_grid_margin_t>::value,
-          double(choose_parameter(get_parameter(np, internal_np::st_grid_margin), defaults::grid_margin)),
-          unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads), default_number_of_threads()))};
+          read_real(np, internal_np::st_grid_margin, defaults::grid_margin, r::grid_margin), threads};
 }
 
 // Grid resolution n, Gaussian width sigma (in voxels) and cube side of a shape of the given radius.
@@ -95,7 +74,7 @@ inline Grid_settings grid_settings(const Grid_options& options, double radius)
                                 " is too small: it must be at least " + std::to_string(min_grid_resolution) +
                                 " and more than 12 Gaussian widths (" +
                                 std::to_string(int(std::floor(2. * tail))) + ")");
-  check_memory(2. * double(n) * double(n) * double(n) * sizeof(double), "a grid of this resolution");
+  check_memory(double(n) * double(n) * double(n) * grid_bytes_per_voxel(options.threads), "a grid of this resolution");
   if(!(options.margin >= 1.)) throw std::invalid_argument("Symmetry_transform: grid_margin must be at least 1");
   const double factor = options.default_margin ? 1. / (1. - tail / double(n)) : options.margin;
   return {std::size_t(n), sigma, 2. * radius * factor, (std::max)(1u, options.threads)};

@@ -9,6 +9,7 @@
 
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 
 namespace CGAL::Symmetry_transform::internal {
 
@@ -16,9 +17,8 @@ namespace CGAL::Symmetry_transform::internal {
 template <typename NamedParameters>
 auto descriptor_parameters(const NamedParameters& np)
 {
-  const int n = int(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_grid_resolution),
-                                                 defaults::descriptor_grid_resolution));
-  return np.grid_resolution(n);
+  check_named_parameters(np);
+  return np.grid_resolution(int(read_grid_resolution(np, defaults::descriptor_grid_resolution, read_number_of_threads(np))));
 }
 
 } // namespace CGAL::Symmetry_transform::internal

@@ -23,14 +23,21 @@
 
 namespace CGAL::Symmetry_transform::internal {
 
+// `number_of_points_on_faces` and `random_seed`, checked (with all the numeric named parameters).
+template <typename NamedParameters>
+Refinement_sampling metric_sampling(const NamedParameters& np)
+{
+  check_named_parameters(np);
+  return {read_sample_count(np, internal_np::number_of_points_on_faces, defaults::metric_samples,
+                            parameter_ranges::number_of_points_on_faces),
+          read_random_seed(np, defaults::random_seed)};
+}
+
 // `number_of_points_on_faces` samples of the triangles, seeded by `random_seed`.
 template <typename NamedParameters>
 std::vector<Eigen::Vector3d> metric_samples(const std::vector<Dtriangle>& triangles, const NamedParameters& np)
 {
-  const std::size_t count = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_points_on_faces),
-                                                         defaults::metric_samples);
-  const unsigned seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), defaults::random_seed);
-  return surface_samples(triangles, parameters::number_of_refinement_samples(count).random_seed(seed));
+  return surface_samples(triangles, metric_sampling(np));
 }
 
 // Distances from the points, moved by `map`, to the triangles.
@@ -53,8 +60,7 @@ std::vector<double> distances_to(const std::vector<Eigen::Vector3d>& points, con
 template <typename NamedParameters>
 unsigned metric_threads(const NamedParameters& np)
 {
-  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_number_of_threads),
-                                      default_number_of_threads());
+  return read_number_of_threads(np);
 }
 
 inline double root_mean_square(const std::vector<double>& d)

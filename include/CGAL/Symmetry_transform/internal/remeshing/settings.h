@@ -12,6 +12,7 @@
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 
 #include <CGAL/Variational_shape_approximation.h>
@@ -46,32 +47,30 @@ struct Meshing_settings
   bool relative_to_chord = false, with_dihedral_angle = false, optimize_anchor_location = true;
 };
 
-// Throws std::invalid_argument on a degenerate plane, more than 64 planes, `max_number_of_proxies`
-// given as 0 or `position_weight` outside [0, 1].
+// Throws std::invalid_argument on a degenerate plane, more than 64 planes, or a numeric named
+// parameter out of its range (parameter_checks.h).
 template <typename PlaneRange, typename NamedParameters>
 Remeshing_settings remeshing_settings(const PlaneRange& planes, const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  namespace r = parameter_ranges;
+  check_named_parameters(np);
   Remeshing_settings s;
   for(const auto& plane : planes) s.planes.push_back(to_dplane(plane));
   if(s.planes.size() > max_number_of_mirror_planes)
     throw std::invalid_argument("Symmetry_transform: at most 64 planes of symmetry");
-  s.max_number_of_proxies = choose_parameter(get_parameter(np, internal_np::max_number_of_proxies), std::size_t(0));
-  if(!parameters::is_default_parameter<NamedParameters, internal_np::max_number_of_proxies_t>::value &&
-     s.max_number_of_proxies == 0)
-    throw std::invalid_argument("Symmetry_transform: max_number_of_proxies must be positive");
-  s.min_error_drop = choose_parameter(get_parameter(np, internal_np::min_error_drop), 0.);
-  s.number_of_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::remeshing_iterations);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::max_number_of_proxies_t>::value)
+    s.max_number_of_proxies = read_count(np, internal_np::max_number_of_proxies, 0, r::max_number_of_proxies);
+  s.min_error_drop = read_real(np, internal_np::min_error_drop, 0., r::min_error_drop);
+  s.number_of_iterations = read_count(np, internal_np::number_of_iterations, defaults::remeshing_iterations, r::number_of_iterations);
   s.number_of_relaxations =
-    choose_parameter(get_parameter(np, internal_np::number_of_relaxations), defaults::remeshing_relaxations);
+    read_count(np, internal_np::number_of_relaxations, defaults::remeshing_relaxations, r::number_of_relaxations);
   s.seeding = choose_parameter(get_parameter(np, internal_np::seeding_method), Surface_mesh_approximation::HIERARCHICAL);
-  s.position_weight = choose_parameter(get_parameter(np, internal_np::st_position_weight), defaults::position_weight);
-  if(!(s.position_weight >= 0. && s.position_weight <= 1.))
-    throw std::invalid_argument("Symmetry_transform: position_weight must lie in [0,1]");
+  s.position_weight = read_real(np, internal_np::st_position_weight, defaults::position_weight, r::position_weight);
   s.strongest_plane_only = choose_parameter(get_parameter(np, internal_np::st_strongest_plane_only), false);
-  s.random_seed = choose_parameter(get_parameter(np, internal_np::random_seed), defaults::random_seed);
-  s.threads = choose_parameter(get_parameter(np, internal_np::st_number_of_threads), default_number_of_threads());
+  s.random_seed = read_random_seed(np, defaults::random_seed);
+  s.threads = read_number_of_threads(np);
   s.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
   return s;
 }
@@ -82,7 +81,7 @@ Meshing_settings meshing_settings(const NamedParameters& np)
   using parameters::choose_parameter;
   using parameters::get_parameter;
   Meshing_settings s;
-  s.subdivision_ratio = choose_parameter(get_parameter(np, internal_np::subdivision_ratio), defaults::subdivision_ratio);
+  s.subdivision_ratio = read_real(np, internal_np::subdivision_ratio, defaults::subdivision_ratio, parameter_ranges::subdivision_ratio);
   s.relative_to_chord = choose_parameter(get_parameter(np, internal_np::relative_to_chord), false);
   s.with_dihedral_angle = choose_parameter(get_parameter(np, internal_np::with_dihedral_angle), false);
   s.optimize_anchor_location = choose_parameter(get_parameter(np, internal_np::optimize_anchor_location), true);

@@ -9,6 +9,7 @@
 // (samples and their normals, the GEDT and a coarse one, the centre of mass, the closest-point
 // matchers), prepared from the named parameters.
 
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
@@ -33,16 +34,14 @@ constexpr long coarse_grid_resolution = 32;
 template <typename NamedParameters>
 int max_order(const NamedParameters& np)
 {
-  const int k = int(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_max_order), defaults::max_order));
-  if(k < 2) throw std::invalid_argument("Symmetry_transform: max_order must be at least 2, not " + std::to_string(k));
-  return k;
+  check_named_parameters(np); // the first reader of the rotational symmetries: all, before the work
+  return int(read_count(np, internal_np::st_max_order, defaults::max_order, parameter_ranges::max_order));
 }
 
 template <typename NamedParameters>
 long coarse_resolution(const NamedParameters& np)
 {
-  const long n = long(parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_grid_resolution),
-                                                   defaults::grid_resolution));
+  const long n = read_grid_resolution(np, defaults::grid_resolution, read_number_of_threads(np));
   return (std::min)(n, coarse_grid_resolution);
 }
 

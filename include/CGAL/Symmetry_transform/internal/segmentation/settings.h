@@ -12,6 +12,7 @@
 
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
@@ -71,47 +72,42 @@ void read_detection_settings(const NamedParameters& np, Segmentation_settings& s
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  s.grid_resolution = long(choose_parameter(get_parameter(np, internal_np::st_grid_resolution), defaults::segmentation_grid_resolution));
-  s.gaussian_width = double(choose_parameter(get_parameter(np, internal_np::st_gaussian_width), defaults::gaussian_width));
-  s.number_of_samples = std::size_t(choose_parameter(get_parameter(np, internal_np::number_of_samples), defaults::segmentation_monte_carlo_pairs));
-  s.number_of_refinement_samples =
-    std::size_t(choose_parameter(get_parameter(np, internal_np::st_number_of_refinement_samples), defaults::segmentation_refinement_samples));
-  s.number_of_iterations = unsigned(choose_parameter(get_parameter(np, internal_np::number_of_iterations), defaults::isp_iterations));
-  s.max_number_of_planes = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_planes), defaults::segmentation_max_number_of_planes));
-  s.symmetry_threshold = double(choose_parameter(get_parameter(np, internal_np::st_symmetry_threshold), defaults::symmetry_threshold));
-  s.laplacian_threshold = double(choose_parameter(get_parameter(np, internal_np::st_laplacian_threshold), defaults::laplacian_threshold));
+  namespace r = parameter_ranges;
+  s.threads = read_number_of_threads(np);
+  s.grid_resolution = read_grid_resolution(np, defaults::segmentation_grid_resolution, s.threads);
+  s.gaussian_width = read_real(np, internal_np::st_gaussian_width, defaults::gaussian_width, r::gaussian_width);
   s.method = choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
+  s.number_of_samples = read_count(np, internal_np::number_of_samples, defaults::segmentation_monte_carlo_pairs,
+                                   s.method == Reflective_symmetry_method::EXACT ? r::number_of_samples_or_zero
+                                                                                 : r::number_of_samples);
+  s.number_of_refinement_samples = read_sample_count(np, internal_np::st_number_of_refinement_samples,
+                                                     defaults::segmentation_refinement_samples, r::number_of_refinement_samples);
+  s.number_of_iterations = unsigned(read_count(np, internal_np::number_of_iterations, defaults::isp_iterations, r::number_of_iterations));
+  s.max_number_of_planes =
+    read_count(np, internal_np::st_max_number_of_planes, defaults::segmentation_max_number_of_planes, r::max_number_of_planes);
+  s.symmetry_threshold = read_real(np, internal_np::st_symmetry_threshold, defaults::symmetry_threshold, r::symmetry_threshold);
+  s.laplacian_threshold = read_real(np, internal_np::st_laplacian_threshold, defaults::laplacian_threshold, r::laplacian_threshold);
   s.estimator =
     choose_parameter(get_parameter(np, internal_np::st_monte_carlo_estimator), Monte_carlo_estimator::STRATIFIED_LINES);
-  s.seed = unsigned(choose_parameter(get_parameter(np, internal_np::random_seed), defaults::random_seed));
-  s.threads = (std::max)(1u, unsigned(choose_parameter(get_parameter(np, internal_np::st_number_of_threads),
-                                                      default_number_of_threads())));
+  s.seed = read_random_seed(np, defaults::random_seed);
 }
 
 // All the settings of segment_by_symmetry(), checked.
 template <typename NamedParameters>
 Segmentation_settings segmentation_settings(const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  namespace r = parameter_ranges;
+  check_named_parameters(np);
   Segmentation_settings s;
-  s.max_depth = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_segmentation_depth), defaults::max_segmentation_depth));
-  s.max_segments = std::size_t(choose_parameter(get_parameter(np, internal_np::st_max_number_of_segments), no_segment_limit));
-  s.lambda = double(choose_parameter(get_parameter(np, internal_np::st_smoothing_lambda), defaults::smoothing_lambda));
-  s.verbose = choose_parameter(get_parameter(np, internal_np::verbose), false);
-  s.partial_symmetry_fraction =
-    double(choose_parameter(get_parameter(np, internal_np::st_partial_symmetry_fraction), defaults::partial_symmetry_fraction));
+  s.max_depth = read_count(np, internal_np::st_max_segmentation_depth, defaults::max_segmentation_depth, r::max_segmentation_depth);
+  s.max_segments = read_count(np, internal_np::st_max_number_of_segments, no_segment_limit, r::max_number_of_segments);
+  s.lambda = read_real(np, internal_np::st_smoothing_lambda, defaults::smoothing_lambda, r::smoothing_lambda);
+  s.verbose = parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false);
+  s.partial_symmetry_fraction = read_real(np, internal_np::st_partial_symmetry_fraction, defaults::partial_symmetry_fraction,
+                                          r::partial_symmetry_fraction);
   s.smallest_part_fraction =
-    double(choose_parameter(get_parameter(np, internal_np::st_smallest_part_fraction), defaults::smallest_part_fraction));
+    read_real(np, internal_np::st_smallest_part_fraction, defaults::smallest_part_fraction, r::smallest_part_fraction);
   read_detection_settings(np, s);
-  if(s.max_number_of_planes == 0)
-    throw std::invalid_argument("segment_by_symmetry: max_number_of_planes must be positive");
-  if(s.max_segments == 0) throw std::invalid_argument("segment_by_symmetry: max_number_of_segments must be positive");
-  if(!(s.lambda >= 0.)) throw std::invalid_argument("segment_by_symmetry: smoothing_lambda must be non-negative");
-  if(!(s.partial_symmetry_fraction >= 0. && s.partial_symmetry_fraction <= 0.5))
-    throw std::invalid_argument("segment_by_symmetry: partial_symmetry_fraction must lie in [0, 0.5]");
-  if(!(s.smallest_part_fraction >= 0. && s.smallest_part_fraction < 1.))
-    throw std::invalid_argument("segment_by_symmetry: smallest_part_fraction must lie in [0, 1)");
   return s;
 }
 
