@@ -54,21 +54,18 @@ inline void check_memory(double bytes, const std::string& what, const std::strin
 // Below 8 samples per axis a grid cannot hold a shape and its band.
 constexpr long min_grid_resolution = 8;
 
-// The most memory any function of the package takes per voxel of its grid, at its peak: the
-// point symmetry transform's padded FFT grids, (2n)^3 doubles and their spectrum (128 bytes per
-// voxel), with the GEDT and the result (16); or a detection's GEDT (8), band (1) and closest
-// triangles (4), transform bins (8), the transform's sharpened (8) and single-precision (4) copies
-// of the GEDT, its Monte Carlo tables of the voxels in the band (at most 48), and a vote array
-// per thread (8 each).
-inline double grid_bytes_per_voxel(unsigned threads)
-{
-  return (std::max)(144., 81. + 8. * double(threads));
-}
+// The most memory any function of the package takes per voxel of its grid, at its peak, whatever
+// the number of threads: the point symmetry transform's padded FFT grids, (2n)^3 doubles and their
+// spectrum (128 bytes per voxel), with the GEDT and the result (16); or a detection's GEDT (8),
+// band (1) and closest triangles (4), transform bins (8), the transform's sharpened (8) and
+// single-precision (4) copies of the GEDT, its Monte Carlo tables of the voxels in the band (at
+// most 48), and the voting estimators' eight vote arrays (64, prst/monte_carlo.h).
+constexpr double grid_bytes_per_voxel = 145.;
 
-// The largest grid_resolution whose computation fits in memory with `threads` threads.
-inline long max_grid_resolution(unsigned threads)
+// The largest grid_resolution whose computation fits in memory.
+inline long max_grid_resolution()
 {
-  return long(std::cbrt(memory_budget_bytes() / grid_bytes_per_voxel(threads)));
+  return long(std::cbrt(memory_budget_bytes() / grid_bytes_per_voxel));
 }
 
 // The range of an integer parameter, [least, most].
@@ -201,12 +198,12 @@ unsigned read_random_seed(const NamedParameters& np, unsigned fallback)
   return unsigned(read_count(np, internal_np::random_seed, fallback, parameter_ranges::random_seed));
 }
 
-// `grid_resolution` (`fallback` if not given), in [8, max_grid_resolution(threads)].
+// `grid_resolution` (`fallback` if not given), in [8, max_grid_resolution()].
 template <typename NamedParameters>
-long read_grid_resolution(const NamedParameters& np, long fallback, unsigned threads)
+long read_grid_resolution(const NamedParameters& np, long fallback)
 {
   const Count_range range{"grid_resolution", std::uintmax_t(min_grid_resolution),
-                          std::uintmax_t(max_grid_resolution(threads))};
+                          std::uintmax_t(max_grid_resolution())};
   return long(read_count(np, internal_np::st_grid_resolution, fallback, range));
 }
 
@@ -238,10 +235,10 @@ template <typename NamedParameters>
 void check_named_parameters(const NamedParameters& np)
 {
   namespace r = parameter_ranges;
-  const unsigned threads = read_number_of_threads(np);
+  read_number_of_threads(np); // its checks
   check_if_given(np, internal_np::random_seed, r::random_seed);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_grid_resolution_t>::value)
-    read_grid_resolution(np, 0, threads);
+    read_grid_resolution(np, 0);
   check_if_given(np, internal_np::st_gaussian_width, r::gaussian_width);
   check_if_given(np, internal_np::st_grid_margin, r::grid_margin);
   // 0 with a prst_method given: reflective_symmetry_transform() accepts it with the exact method only.

@@ -40,7 +40,7 @@ Grid_options grid_options(const NamedParameters& np)
   namespace r = parameter_ranges;
   check_named_parameters(np);
   const unsigned threads = read_number_of_threads(np);
-  return {read_grid_resolution(np, defaults::grid_resolution, threads),
+  return {read_grid_resolution(np, defaults::grid_resolution),
           read_real(np, internal_np::st_gaussian_width, defaults::gaussian_width, r::gaussian_width),
           parameters::is_default_parameter<NamedParameters, internal_np::st_grid_margin_t>::value,
           read_real(np, internal_np::st_grid_margin, defaults::grid_margin, r::grid_margin), threads};
@@ -74,7 +74,7 @@ inline Grid_settings grid_settings(const Grid_options& options, double radius)
                                 " is too small: it must be at least " + std::to_string(min_grid_resolution) +
                                 " and more than 12 Gaussian widths (" +
                                 std::to_string(int(std::floor(2. * tail))) + ")");
-  check_memory(double(n) * double(n) * double(n) * grid_bytes_per_voxel(options.threads), "a grid of this resolution");
+  check_memory(double(n) * double(n) * double(n) * grid_bytes_per_voxel, "a grid of this resolution");
   if(!(options.margin >= 1.)) throw std::invalid_argument("Symmetry_transform: grid_margin must be at least 1");
   const double factor = options.default_margin ? 1. / (1. - tail / double(n)) : options.margin;
   return {std::size_t(n), sigma, 2. * radius * factor, (std::max)(1u, options.threads)};

@@ -18,7 +18,7 @@ template <typename NamedParameters>
 auto descriptor_parameters(const NamedParameters& np)
 {
   check_named_parameters(np);
-  return np.grid_resolution(int(read_grid_resolution(np, defaults::descriptor_grid_resolution, read_number_of_threads(np))));
+  return np.grid_resolution(int(read_grid_resolution(np, defaults::descriptor_grid_resolution)));
 }
 
 } // namespace CGAL::Symmetry_transform::internal

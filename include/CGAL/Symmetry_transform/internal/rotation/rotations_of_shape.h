@@ -41,7 +41,7 @@ int max_order(const NamedParameters& np)
 template <typename NamedParameters>
 long coarse_resolution(const NamedParameters& np)
 {
-  const long n = read_grid_resolution(np, defaults::grid_resolution, read_number_of_threads(np));
+  const long n = read_grid_resolution(np, defaults::grid_resolution);
   return (std::min)(n, coarse_grid_resolution);
 }
 

@@ -74,7 +74,7 @@ void read_detection_settings(const NamedParameters& np, Segmentation_settings& s
   using parameters::get_parameter;
   namespace r = parameter_ranges;
   s.threads = read_number_of_threads(np);
-  s.grid_resolution = read_grid_resolution(np, defaults::segmentation_grid_resolution, s.threads);
+  s.grid_resolution = read_grid_resolution(np, defaults::segmentation_grid_resolution);
   s.gaussian_width = read_real(np, internal_np::st_gaussian_width, defaults::gaussian_width, r::gaussian_width);
   s.method = choose_parameter(get_parameter(np, internal_np::st_prst_method), Reflective_symmetry_method::MONTE_CARLO);
   s.number_of_samples = read_count(np, internal_np::number_of_samples, defaults::segmentation_monte_carlo_pairs,
