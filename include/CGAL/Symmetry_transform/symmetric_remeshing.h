@@ -202,7 +202,9 @@ bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const
  *
  * \returns `true` if the triangles form a 2-manifold oriented polygon mesh
  * (`CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh()`), as \cgal's function;
- * `false` if no output of the mesh (`anchors`, `triangles`, `output_mesh`) is asked for.
+ * `false` if they do not, or if no output of the mesh (`anchors`, `triangles`, `output_mesh`) is
+ * asked for. The outputs asked for are written in either case: with `false`, `triangles` is a
+ * soup that is not a 2-manifold oriented mesh, and `output_mesh` receives it repaired as said above.
  * \throws std::invalid_argument if `tm` has no face, a face that is not a triangle, a non-finite
  * coordinate or only degenerate faces; if an index map does not give distinct indices below
  * `num_vertices(tm)` or `num_faces(tm)`; if a plane is degenerate or there are more than 64; if a numeric named parameter lies out of its range (the message names it and the range)

@@ -146,7 +146,7 @@ inline void check_radius(double radius)
 inline void check_frame(const Dpoint& center, double radius)
 {
   check_radius(radius);
-  const double distance = std::sqrt(CGAL::squared_distance(center, CGAL::ORIGIN));
+  const double distance = std::sqrt((center - CGAL::ORIGIN).squared_length());
   if(distance > farthest_center_in_radii * radius)
     throw std::invalid_argument("Symmetry_transform: the input lies " + std::to_string(distance / radius) +
                                 " radii from the origin, beyond the " + std::to_string(farthest_center_in_radii) +
