@@ -72,8 +72,9 @@ void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned 
   if(progress.cancelled()) throw Operation_cancelled();
 }
 
-// Runs body(thread, begin, end) on `threads` contiguous, fixed slices of [0, count): the
-// split depends only on `count` and `threads`, so per-thread results are reproducible. The
+// Runs body(thread, begin, end) on `threads` contiguous slices of [0, count). The slices change
+// with the thread count: each item's result must depend on the item alone (results summed over
+// items go through parallel_for_chunks(), whose chunks do not depend on the threads). The
 // calling thread runs slice 0 itself: one thread fewer to start, which matters for the many
 // short calls of ISP (a start costs tens of microseconds). The first exception thrown by a body
 // is rethrown in the caller, once every slice is done. Under a callback (progress.h), bodies
