@@ -17,7 +17,11 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <iterator>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
@@ -72,6 +76,47 @@ public:
 };
 
 typedef CGAL::AABB_tree<Triangle_tree_traits> Triangle_tree;
+
+// Triangles whose distances to a point differ by less than this fraction of a voxel are at the
+// same distance: the closest point of a voxel's centre or of a query is often on an edge or a
+// corner that several triangles share, and which of them the rounding of the coordinates favours
+// changes when the shape is moved. The one of lowest index is taken instead, whatever the
+// rounding (a millionth of a voxel is far above the rounding of coordinates a million radii
+// from the origin, and far below anything the distances are used for).
+constexpr double equal_distance_fraction_of_voxel = 1e-6;
+
+// Index of the triangle nearest to `p` among `count` candidates (indices `triangle[i]`, squared
+// distances `d2[i]`), the lowest index among those within `tie` of the nearest distance.
+inline std::size_t nearest_of_tied(const std::int32_t* triangle, const double* d2, std::size_t count, double tie)
+{
+  const double least = *std::min_element(d2, d2 + count);
+  const double reach = (std::sqrt(least) + tie) * (std::sqrt(least) + tie);
+  std::size_t best = count;
+  for(std::size_t i = 0; i < count; ++i)
+    if(d2[i] <= reach && (best == count || triangle[i] < triangle[best])) best = i;
+  return best;
+}
+
+// The triangle closest to `p` (`closest`, found in `tree`), or, among the triangles at the same
+// distance within `tie` (those through the closest point), the one of lowest index.
+inline std::int32_t lowest_closest_triangle(const Triangle_tree& tree, const std::vector<Dtriangle>& triangles,
+                                            const Dpoint& p, const Triangle_tree::Point_and_primitive_id& closest,
+                                            double tie)
+{
+  const Dpoint& c = closest.first;
+  std::vector<Triangle_tree::Primitive_id> through;
+  tree.all_intersected_primitives(CGAL::Bbox_3(c.x() - tie, c.y() - tie, c.z() - tie, c.x() + tie, c.y() + tie, c.z() + tie),
+                                  std::back_inserter(through));
+  std::vector<std::int32_t> index{std::int32_t(closest.second - triangles.begin())};
+  std::vector<double> d2{CGAL::squared_distance(p, c)};
+  const Eigen::Vector3d q = to_eigen(p);
+  for(const auto& id : through) {
+    const Dtriangle& t = *id;
+    index.push_back(std::int32_t(id - triangles.begin()));
+    d2.push_back((q - closest_point_on_triangle(q, to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2]))).squaredNorm());
+  }
+  return index[nearest_of_tied(index.data(), d2.data(), index.size(), tie)];
+}
 
 // The progress is polled before each split of at least this many triangles (the top splits,
 // which partially sort up to all of them), and every tree_splits_per_poll smaller splits.

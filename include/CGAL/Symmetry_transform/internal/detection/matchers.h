@@ -144,23 +144,21 @@ public:
   {
     const std::array<long, 3> corner = cell_corner(p);
     std::array<std::int32_t, 8> seen;
+    std::array<double, 8> d2;
+    std::array<Eigen::Vector3d, 8> on_triangle;
     std::size_t count = 0;
-    double best = std::numeric_limits<double>::infinity();
-    std::pair<Eigen::Vector3d, std::int32_t> nearest(Eigen::Vector3d::Zero(), -1);
     for(long c = 0; c < 8; ++c) {
       const std::int32_t t = closest_triangles_[std::size_t(
         ((corner[2] + (c >> 2)) * resolution_ + corner[1] + ((c >> 1) & 1)) * resolution_ + corner[0] + (c & 1))];
       if(t < 0 || std::find(seen.begin(), seen.begin() + count, t) != seen.begin() + count) continue;
-      seen[count++] = t;
       const std::array<Eigen::Vector3d, 3>& v = corners_[std::size_t(t)];
-      const Eigen::Vector3d on_triangle = closest_point_on_triangle(p, v[0], v[1], v[2]);
-      const double d2 = (p - on_triangle).squaredNorm();
-      if(d2 < best) {
-        best = d2;
-        nearest = {on_triangle, t};
-      }
+      on_triangle[count] = closest_point_on_triangle(p, v[0], v[1], v[2]);
+      d2[count] = (p - on_triangle[count]).squaredNorm();
+      seen[count++] = t;
     }
-    return nearest;
+    if(count == 0) return {Eigen::Vector3d::Zero(), -1};
+    const std::size_t nearest = nearest_of_tied(seen.data(), d2.data(), count, equal_distance_fraction_of_voxel * voxel_size_);
+    return {on_triangle[nearest], seen[nearest]};
   }
 
 private:

@@ -179,7 +179,8 @@ void fill_gaussian_of_band(Voxel_grid<GT>& grid, const std::vector<char>& in_ban
 }
 
 // If `closest_triangles` is given, it receives the index of the triangle closest to the centre
-// of each voxel of the band (-1 elsewhere): a Closest_triangle_field for ISP, at no extra cost.
+// of each voxel of the band (-1 elsewhere), the lowest of those at the same distance: a
+// Closest_triangle_field for ISP.
 // `tree`: the AABB tree of `triangles`, distance queries accelerated (Triangle_matcher's).
 template <typename GT>
 void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid, const std::vector<Dtriangle>& triangles,
@@ -190,9 +191,10 @@ void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid, const s
   const std::vector<char> in_band = band_of_triangles(grid, triangles, settings.cutoff(), settings.threads);
   stage.move_to(progress_shares::gedt_band, 1.);
   if(closest_triangles != nullptr) closest_triangles->assign(grid.values().size(), -1);
+  const double tie = equal_distance_fraction_of_voxel * grid.voxel_size();
   fill_gaussian_of_band(grid, in_band, settings, [&](const Dpoint& p, std::size_t v) {
     const auto closest = tree.closest_point_and_primitive(p);
-    if(closest_triangles != nullptr) (*closest_triangles)[v] = std::int32_t(closest.second - triangles.begin());
+    if(closest_triangles != nullptr) (*closest_triangles)[v] = lowest_closest_triangle(tree, triangles, p, closest, tie);
     return CGAL::squared_distance(p, closest.first);
   });
 }
