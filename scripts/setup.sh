@@ -7,10 +7,11 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 DATA_DIR=${DATA_DIR:-$ROOT/build/data}
 
 # doxygen, graphviz (the manual's diagrams) and libjs-mathjax (its formulas, offline) build the
-# manual; python3 runs scripts/longest_functions.py (the ctest test function_length).
+# manual; python3 runs scripts/longest_functions.py (the ctest test function_length); clang and
+# libclang-rt-dev (its sanitizer and libFuzzer runtimes) build the fuzzer (scripts/fuzz.sh).
 PACKAGES=(build-essential cmake pkg-config libcgal-dev libcgal-demo libeigen3-dev libboost-dev
           libfftw3-dev libgtest-dev libbenchmark-dev doxygen graphviz libjs-mathjax python3 libtbb-dev
-          libgmp-dev libmpfr-dev)
+          libgmp-dev libmpfr-dev clang libclang-rt-dev)
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything (Release) in build/ and runs all tests.
+# Installs what is missing, builds everything (Release) in build/ and runs all tests, then builds
+# the fuzzer with clang in build-fuzz/ and runs it for FUZZ_SECONDS (default 60; scripts/fuzz.sh).
 # BENCHMARKS=1 also builds the benchmark programs (they are not run here).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -16,3 +17,4 @@ cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release \
   -DSYMMETRY_TRANSFORM_DATA_DIR="$BUILD/data"
 cmake --build "$BUILD" -j "$JOBS"
 ctest --test-dir "$BUILD" --output-on-failure -j "$CTEST_JOBS"
+JOBS=$JOBS bash "$ROOT/scripts/fuzz.sh"

@@ -335,6 +335,20 @@ TEST(GaussianDistanceTransformBadInput, SinglePointAndCoincidentPointsAreRejecte
   EXPECT_TRUE(points_are_rejected(std::vector<Point_3>(5, Point_3(1, 2, 3)), "single point"));
 }
 
+// Beyond 1e100 or below 1e-100 the sums of squares leave the range of doubles: a point at -5e303
+// among points at the origin made the grid's spacing infinite and its voxel indices NaN.
+TEST(GaussianDistanceTransformBadInput, ShapeTooLargeOrTooSmallForDoublesIsRejected)
+{
+  std::vector<Point_3> huge(45, Point_3(0, 0, 0));
+  huge.push_back(Point_3(-5e303, 0, 0));
+  EXPECT_TRUE(points_are_rejected(huge, "scale it first"));
+  EXPECT_TRUE(points_are_rejected(std::vector<Point_3>{Point_3(0, 0, 0), Point_3(1e120, 0, 0)}, "scale it first"));
+  EXPECT_TRUE(points_are_rejected(std::vector<Point_3>{Point_3(0, 0, 0), Point_3(0, 1e-120, 0)}, "scale it first"));
+  EXPECT_TRUE(mesh_is_rejected(box_with_corner_at(Point_3(1e200, 1, 1)), "scale it first"));
+  EXPECT_NO_THROW(ST::gaussian_distance_transform_of_points(
+    std::vector<Point_3>{Point_3(0, 0, 0), Point_3(1e90, 0, 0), Point_3(0, 1e90, 0)}, CGAL::parameters::grid_resolution(32)));
+}
+
 TEST(GaussianDistanceTransformBadInput, GridTooLargeForMemoryIsRejected)
 {
   EXPECT_TRUE(mesh_is_rejected(box<Surface_mesh>().mesh, "memory", CGAL::parameters::grid_resolution(100000)));

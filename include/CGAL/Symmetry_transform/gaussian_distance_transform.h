@@ -74,7 +74,7 @@ Voxel_grid<GT> cancellable_gaussian_distance_transform_of_triangles(const std::v
  * and whose `radius()` is the largest distance from it to a vertex of a non-degenerate face.
  *
  * \throws std::invalid_argument if the mesh has no face, a face that is not a triangle, only
- * degenerate faces, a coordinate that is NaN or infinite, or if a numeric named parameter lies out
+ * degenerate faces, a coordinate that is NaN or infinite, a radius out of \f$ [10^{-100}, 10^{100}] \f$, or if a numeric named parameter lies out
  * of its range: `grid_resolution` from 8 to the largest whose transforms fit in 3/4 of the physical memory.
 */
 template <typename TriangleMesh,
@@ -115,7 +115,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
  * `radius()` is the largest distance from it to a point.
  *
  * \throws std::invalid_argument if the range is empty, all its points coincide, a coordinate is
- * NaN or infinite, or if a numeric named parameter lies out of its range (as `gaussian_distance_transform()`).
+ * NaN or infinite, a radius out of \f$ [10^{-100}, 10^{100}] \f$, or if a numeric named parameter lies out of its range (as `gaussian_distance_transform()`).
 */
 template <typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -165,7 +165,7 @@ gaussian_distance_transform_of_points(const PointRange& points,
  *
  * \throws std::invalid_argument if a triangle refers to a point out of range or has not three
  * corners, if there is no triangle or only degenerate ones, if a corner has a NaN or infinite
- * coordinate, or if a numeric named parameter lies out of its range (as `gaussian_distance_transform()`).
+ * coordinate, a radius out of \f$ [10^{-100}, 10^{100}] \f$, or if a numeric named parameter lies out of its range (as `gaussian_distance_transform()`).
 */
 template <typename PointRange, typename TriangleRange,
           typename NamedParameters = parameters::Default_named_parameters>

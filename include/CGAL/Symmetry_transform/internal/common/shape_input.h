@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -135,16 +137,34 @@ std::vector<Dtriangle> triangles_of_soup(const PointRange& points, const Triangl
 // less than a millionth of the radius (2^-52 times the distance): the package's tolerances.
 constexpr double farthest_center_in_radii = 1e-6 / 0x1p-52;
 
+// The radii whose squares and cubes (areas times coordinates in the centroid, squared distances
+// in voxels of 1/8 radius and less) are normal doubles, with margin: the sums of the package then
+// hold no infinity, no NaN and no loss to denormals.
+constexpr double smallest_radius = 1e-100;
+constexpr double largest_radius = 1e100;
+
+// `radius`: NaN where the sums that give the centre overflowed.
+inline std::invalid_argument size_out_of_range(double radius)
+{
+  std::ostringstream message;
+  message << "Symmetry_transform: the input's radius " << radius << " lies out of [" << smallest_radius << ", "
+          << largest_radius << "], where the squares of its distances leave the range of doubles: scale it first";
+  return std::invalid_argument(message.str());
+}
+
 inline void check_radius(double radius)
 {
   if(!(radius > 0.))
     throw std::invalid_argument("Symmetry_transform: the input is a single point (zero radius)");
+  if(!(radius >= smallest_radius && radius <= largest_radius)) throw size_out_of_range(radius);
 }
 
 // Refuses a shape so far from the origin for its size that its coordinates cannot hold the
 // answer (DESIGN.md, invariance): it is said, never answered wrongly.
 inline void check_frame(const Dpoint& center, double radius)
 {
+  if(!std::isfinite(center.x()) || !std::isfinite(center.y()) || !std::isfinite(center.z()))
+    throw size_out_of_range(std::numeric_limits<double>::quiet_NaN());
   check_radius(radius);
   const double distance = std::sqrt((center - CGAL::ORIGIN).squared_length());
   if(distance > farthest_center_in_radii * radius)
