@@ -351,12 +351,12 @@ TEST(GaussianDistanceTransformBadInput, ShapeTooLargeOrTooSmallForDoublesIsRejec
 
 TEST(GaussianDistanceTransformBadInput, GridTooLargeForMemoryIsRejected)
 {
-  EXPECT_TRUE(mesh_is_rejected(box<Surface_mesh>().mesh, "memory", CGAL::parameters::grid_resolution(100000)));
+  EXPECT_TRUE(mesh_is_rejected(box<Surface_mesh>().mesh, "grid_resolution must be", CGAL::parameters::grid_resolution(100000)));
 }
 
 TEST(GaussianDistanceTransformBadInput, GridTooSmallIsRejected)
 {
-  EXPECT_TRUE(mesh_is_rejected(box<Surface_mesh>().mesh, "too small", CGAL::parameters::grid_resolution(4)));
+  EXPECT_TRUE(mesh_is_rejected(box<Surface_mesh>().mesh, "grid_resolution must be", CGAL::parameters::grid_resolution(4)));
   // 16 samples cannot hold 4 x 3 widths of 1.5 voxels.
   EXPECT_TRUE(mesh_is_rejected(box<Surface_mesh>().mesh, "too small", CGAL::parameters::grid_resolution(16)));
 }
