@@ -9,6 +9,7 @@
 #define SYMMETRY_TRANSFORM_BENCHMARK_UTILITIES_H
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -51,6 +52,16 @@ inline std::vector<std::pair<std::string, std::string>> option_pairs(int argc, c
     pairs.emplace_back(argv[a], argv[a + 1]);
   }
   return pairs;
+}
+
+// Every .off file of CGAL's sample meshes (SYMMETRY_TRANSFORM_DATA_DIR/meshes), sorted by name.
+inline std::vector<std::string> all_sample_meshes()
+{
+  std::vector<std::string> names;
+  for(const auto& entry : std::filesystem::directory_iterator(std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes"))
+    if(entry.path().extension() == ".off") names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 } // namespace benchmark_utilities

@@ -51,15 +51,6 @@ struct Options
   bool exact_only = false;     // list only the meshes whose strongest plane is exact
 };
 
-std::vector<std::string> all_sample_meshes()
-{
-  std::vector<std::string> names;
-  for(const auto& entry : std::filesystem::directory_iterator(std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes"))
-    if(entry.path().extension() == ".off") names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 Options parse(int argc, char** argv)
 {
   Options o;
@@ -69,7 +60,7 @@ Options parse(int argc, char** argv)
     return v;
   };
   for(const auto& [option, value] : bu::option_pairs(argc, argv)) {
-    if(option == "--meshes") o.meshes = value == "all" ? all_sample_meshes() : bu::split(value);
+    if(option == "--meshes") o.meshes = value == "all" ? bu::all_sample_meshes() : bu::split(value);
     else if(option == "--shifts") o.shifts = numbers(value);
     else if(option == "--radii") o.radii = numbers(value);
     else if(option == "--thread-counts") {

@@ -171,16 +171,6 @@ struct Options
   bool summary = false, messy = false, stages = true;
 };
 
-// Every .off file of the sample meshes, sorted by name.
-std::vector<std::string> all_sample_meshes()
-{
-  std::vector<std::string> names;
-  for(const auto& entry : std::filesystem::directory_iterator(std::string(SYMMETRY_TRANSFORM_DATA_DIR) + "/meshes"))
-    if(entry.path().extension() == ".off") names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 Options parse(int argc, char** argv)
 {
   Options o;
@@ -191,7 +181,7 @@ Options parse(int argc, char** argv)
     if(std::find(known.begin(), known.end(), option) == known.end()) fail(argv[0], "unknown option '" + option + "'");
     if(a + 1 >= argc) fail(argv[0], option + " needs a value");
     const std::string value = argv[a + 1];
-    if(option == "--meshes") o.meshes = value == "all" ? all_sample_meshes() : split(value);
+    if(option == "--meshes") o.meshes = value == "all" ? benchmark_utilities::all_sample_meshes() : split(value);
     else if(option == "--resolution") o.resolution = natural(argv[0], option, value, false);
     else if(option == "--repeats") o.repeats = natural(argv[0], option, value, false);
     else if(option == "--seed") o.seed = natural(argv[0], option, value, false);
