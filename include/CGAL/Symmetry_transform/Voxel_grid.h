@@ -53,14 +53,23 @@ public:
   */
   Voxel_grid(std::size_t resolution, const Point_3& center, FT radius, FT side_length,
              double value = 0.)
-    : n_(resolution), center_(center), radius_(CGAL::to_double(radius)),
+    : n_(resolution), radius_(CGAL::to_double(radius)),
       side_(CGAL::to_double(side_length)), values_(resolution * resolution * resolution, value)
   {
     if(resolution == 0 || !(side_ > 0.) || !(radius_ >= 0.))
       throw std::invalid_argument("Voxel_grid: the resolution and the side length must be positive, the radius non-negative");
+    recenter(center);
+  }
+
+  /// \cond SKIP_IN_MANUAL
+  // The same samples, the cube moved to be centred on `center`.
+  void recenter(const Point_3& center)
+  {
+    center_ = center;
     origin_ = {CGAL::to_double(center.x()) - side_ / 2., CGAL::to_double(center.y()) - side_ / 2.,
                CGAL::to_double(center.z()) - side_ / 2.};
   }
+  /// \endcond
 
   /// Number of samples along each axis.
   /// \returns \f$ n \f$ (0 for a default-constructed grid)

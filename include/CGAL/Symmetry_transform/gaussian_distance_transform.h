@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL::Symmetry_transform {
@@ -35,14 +36,23 @@ Voxel_grid<GT> cancellable_gaussian_distance_transform(const Shape_frame& frame,
   return grid;
 }
 
-template <typename GT, typename NamedParameters>
-Voxel_grid<GT> cancellable_gaussian_distance_transform_of_triangles(const std::vector<Dtriangle>& triangles,
-                                                                    const NamedParameters& np)
+// The transform of `shape` (triangles or points, in the input's coordinates), computed in
+// coordinates centred on it (DESIGN.md, invariance), the grid then placed on the input.
+template <typename GT, typename Item, typename NamedParameters>
+Voxel_grid<GT> cancellable_gaussian_distance_transform_of(const std::vector<Item>& shape, const NamedParameters& np)
 {
-  return cancellable_gaussian_distance_transform<GT>(frame_of_triangles(triangles), np,
-    [&](Voxel_grid<GT>& grid, const Grid_settings& settings) {
-      fill_gaussian_distance_transform_of_triangles(grid, triangles, settings);
+  const Local_coordinates local = local_coordinates_of(shape);
+  const std::vector<Item> local_shape = to_local(local, shape);
+  Shape_frame frame;
+  if constexpr(std::is_same_v<Item, Dtriangle>) frame = frame_of_triangles(local_shape);
+  else frame = frame_of_points(local_shape);
+  Voxel_grid<GT> grid = cancellable_gaussian_distance_transform<GT>(frame, np,
+    [&](Voxel_grid<GT>& g, const Grid_settings& settings) {
+      if constexpr(std::is_same_v<Item, Dtriangle>) fill_gaussian_distance_transform_of_triangles(g, local_shape, settings);
+      else fill_gaussian_distance_transform_of_points(g, local_shape, settings);
     });
+  grid.recenter(to_point<GT>(local.to_input(to_eigen(frame.center))));
+  return grid;
 }
 
 } // namespace internal
@@ -85,7 +95,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
 {
   typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type GT;
 
-  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(
+  return internal::cancellable_gaussian_distance_transform_of<GT>(
     internal::without_progress([&] { return internal::triangles_of_mesh(tm, np); }), np);
 }
 
@@ -128,10 +138,7 @@ gaussian_distance_transform_of_points(const PointRange& points,
 
   const std::vector<internal::Dpoint> samples =
     internal::points_of_range(points, NP_helper::get_const_point_map(points, np));
-  return internal::cancellable_gaussian_distance_transform<GT>(internal::frame_of_points(samples), np,
-    [&](Voxel_grid<GT>& grid, const internal::Grid_settings& settings) {
-      internal::fill_gaussian_distance_transform_of_points(grid, samples, settings);
-    });
+  return internal::cancellable_gaussian_distance_transform_of<GT>(samples, np);
 }
 
 /*!
@@ -174,7 +181,7 @@ gaussian_distance_transform_of_triangle_soup(const PointRange& points, const Tri
                                              const NamedParameters& np = parameters::default_values())
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
-  return internal::cancellable_gaussian_distance_transform_of_triangles<GT>(
+  return internal::cancellable_gaussian_distance_transform_of<GT>(
     internal::without_progress([&] { return internal::triangles_of_soup(points, triangles, np); }), np);
 }
 

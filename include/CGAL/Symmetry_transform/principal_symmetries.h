@@ -73,7 +73,8 @@ principal_symmetries(
     const internal::Detection_settings settings = internal::detection_settings(np);
     const internal::Triangle_surface<GT> surface(std::move(triangles), settings.grid);
     stage.move_to(surface_share, 1.);
-    return internal::principal_symmetries_of_surface(surface, prst, settings);
+    const auto local_prst = internal::shifted(prst, Eigen::Vector3d(-surface.local.center));
+    return internal::to_input(surface.local, internal::principal_symmetries_of_surface(surface, local_prst, settings));
   }, [] { return std::vector<Principal_symmetry<GT>>(); });
 }
 
@@ -182,9 +183,11 @@ typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typen
     const Triangle_surface<GT> surface(std::move(triangles), settings.grid);
     stage.move_to(surface_share, 1.);
     const Isp_settings isp = isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
-    return to_plane<GT>(iterative_symmetric_points(surface_samples(surface.triangles, settings.sampling), to_dplane(plane),
-                                                   surface.matcher, isp, Isp_phase::BOTH, {}, &surface.field)
-                          .plane);
+    const Dplane start = surface.local.to_local(to_dplane(plane));
+    return to_plane<GT>(surface.local.to_input(
+      iterative_symmetric_points(surface_samples(surface.triangles, settings.sampling), start, surface.matcher, isp,
+                                 Isp_phase::BOTH, {}, &surface.field)
+        .plane));
   }, [&] { return plane; });
 }
 

@@ -271,6 +271,12 @@ public:
 
   /// \cond SKIP_IN_MANUAL
   const internal::Plane_bins& bins() const { return bins_; }
+  // The same values, for the planes of offsets measured from `center`.
+  void recenter(const Point_3& center)
+  {
+    center_ = center;
+    bins_.center = {CGAL::to_double(center.x()), CGAL::to_double(center.y()), CGAL::to_double(center.z())};
+  }
   /// \endcond
 
 private:

@@ -143,7 +143,7 @@ rotational_symmetries(
     internal::Progress_stage stage(0., surface_share);
     const internal::Triangle_surface<GT> surface(internal::triangles_of_mesh(tm, np), np);
     stage.move_to(surface_share, 1.);
-    const Eigen::Vector3d center = internal::to_eigen(internal::to_dpoint(surface.gedt.center()));
+    const Eigen::Vector3d center = surface.local.to_input(internal::to_eigen(internal::to_dpoint(surface.gedt.center())));
     return internal::rotations_of_surface(surface, max_order, internal::plane_pair_candidates(dplanes, max_order, center), np);
   }, [] { return std::vector<Rotational_symmetry<GT>>(); });
 }

@@ -38,8 +38,8 @@ bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const
   auto seconds = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
   Progress_stage stage(0., progress_shares::remeshing_preparation);
-  const Remeshing_settings settings = remeshing_settings(planes, np);
-  const Remeshing_mesh mesh = make_working_mesh(tm, settings.planes, np);
+  Remeshing_settings settings = remeshing_settings(planes, np);
+  const Remeshing_mesh mesh = make_working_mesh(tm, settings.planes, np); // the planes in its local coordinates
   if(settings.verbose)
     std::cerr << "Symmetric VSA: " << mesh.number_of_input_faces << " faces, " << mesh.number_of_faces() << " after splitting along "
               << settings.planes.size() << " plane(s) (" << seconds() << " s)\n";
@@ -64,9 +64,9 @@ bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const
               << out->triangles.size() << " triangles (" << seconds() << " s)\n";
   throw_if_cancelled();
   write_face_outputs(tm, partition, np);
-  write_proxies<GT>(partition, np);
+  write_proxies<GT>(partition, mesh.frame, np);
   if(!wants_mesh) return false;
-  write_mesh_outputs<GT>(*out, np);
+  write_mesh_outputs<GT>(*out, mesh.frame, np);
   return Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(out->triangles);
 }
 

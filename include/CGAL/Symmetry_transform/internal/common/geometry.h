@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
 
@@ -39,6 +40,40 @@ struct Dplane
 
   Eigen::Vector3d reflect(const Eigen::Vector3d& p) const { return p - 2. * (normal.dot(p) - offset) * normal; }
   double signed_distance(const Eigen::Vector3d& p) const { return normal.dot(p) - offset; }
+};
+
+// The bounding box of points (at least one).
+struct Bounding_box
+{
+  Eigen::Vector3d low, high;
+
+  explicit Bounding_box(const Eigen::Vector3d& p) : low(p), high(p) {}
+  explicit Bounding_box(const std::vector<Eigen::Vector3d>& points) : Bounding_box(points.front())
+  {
+    for(const Eigen::Vector3d& p : points) add(p);
+  }
+  void add(const Eigen::Vector3d& p)
+  {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  Eigen::Vector3d center() const { return 0.5 * (low + high); }
+};
+
+// Coordinates relative to `center`, the centre of a shape, for the computations that form sums,
+// products and differences of positions: far from the origin, the input's coordinates keep few
+// digits of the shape's size, while the local ones keep them all (DESIGN.md, invariance by design).
+struct Local_coordinates
+{
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+
+  Eigen::Vector3d to_local(const Eigen::Vector3d& p) const { return p - center; }
+  Eigen::Vector3d to_input(const Eigen::Vector3d& p) const { return p + center; }
+  Dpoint to_local(const Dpoint& p) const { return to_dpoint(to_local(to_eigen(p))); }
+  Dpoint to_input(const Dpoint& p) const { return to_dpoint(to_input(to_eigen(p))); }
+  Dtriangle to_local(const Dtriangle& t) const { return {to_local(t[0]), to_local(t[1]), to_local(t[2])}; }
+  Dplane to_local(const Dplane& p) const { return {p.normal, p.offset - p.normal.dot(center)}; }
+  Dplane to_input(const Dplane& p) const { return {p.normal, p.offset + p.normal.dot(center)}; }
 };
 
 // A point of any kernel in double precision; throws on a NaN or infinite coordinate.

@@ -174,6 +174,36 @@ inline void check_frame(const Dpoint& center, double radius)
                                 "the origin first");
 }
 
+// Coordinates centred on the bounding box of `points`, checked as check_frame() does.
+inline Local_coordinates local_coordinates_of(const std::vector<Dpoint>& points)
+{
+  Bounding_box box(to_eigen(points.front()));
+  for(const Dpoint& p : points) box.add(to_eigen(p));
+  const Local_coordinates local{box.center()};
+  double r2 = 0.;
+  for(const Dpoint& p : points) r2 = (std::max)(r2, local.to_local(to_eigen(p)).squaredNorm());
+  check_frame(to_dpoint(local.center), std::sqrt(r2));
+  return local;
+}
+
+// The same for the corners of `triangles`.
+inline Local_coordinates local_coordinates_of(const std::vector<Dtriangle>& triangles)
+{
+  std::vector<Dpoint> corners;
+  corners.reserve(3 * triangles.size());
+  for(const Dtriangle& t : triangles)
+    for(int i = 0; i < 3; ++i) corners.push_back(t[i]);
+  return local_coordinates_of(corners);
+}
+
+// `shape` (points or triangles) in the coordinates `local`.
+template <typename Item>
+std::vector<Item> to_local(const Local_coordinates& local, std::vector<Item> shape)
+{
+  for(Item& item : shape) item = local.to_local(item);
+  return shape;
+}
+
 // Area-weighted centroid of the surface and largest distance from it to a vertex.
 inline Shape_frame frame_of_triangles(const std::vector<Dtriangle>& triangles)
 {

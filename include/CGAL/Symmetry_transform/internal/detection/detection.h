@@ -53,8 +53,32 @@ struct Detection
   Reflective_symmetry_transform<GT> prst;
 };
 
-// The candidates of `prst`, the transform of `surface`, refined: ISP walks with the surface's
-// closest-triangle field and ends with exact searches.
+// The transform `prst`, its centre moved by `shift`: the same values, for the same planes moved.
+template <typename GT>
+Reflective_symmetry_transform<GT> shifted(Reflective_symmetry_transform<GT> prst, const Eigen::Vector3d& shift)
+{
+  prst.recenter(to_point<GT>(to_eigen(to_dpoint(prst.center())) + shift));
+  return prst;
+}
+
+// Symmetries in the coordinates `local`, moved to the input's.
+template <typename GT>
+std::vector<Principal_symmetry<GT>> to_input(const Local_coordinates& local, std::vector<Principal_symmetry<GT>> symmetries)
+{
+  for(Principal_symmetry<GT>& s : symmetries) s.plane = to_plane<GT>(local.to_input(to_dplane(s.plane)));
+  return symmetries;
+}
+
+// A detection in the coordinates `local`, moved to the input's.
+template <typename GT>
+Detection<GT> to_input(const Local_coordinates& local, Detection<GT> detection)
+{
+  return {to_input(local, std::move(detection.symmetries)), shifted(std::move(detection.prst), local.center)};
+}
+
+// The candidates of `prst`, the transform of `surface` (both in the surface's local coordinates,
+// as the planes returned), refined: ISP walks with the surface's closest-triangle field and ends
+// with exact searches.
 template <typename GT>
 std::vector<Principal_symmetry<GT>> principal_symmetries_of_surface(const Triangle_surface<GT>& surface,
                                                                    const Reflective_symmetry_transform<GT>& prst,
@@ -65,7 +89,8 @@ std::vector<Principal_symmetry<GT>> principal_symmetries_of_surface(const Triang
                            &surface.field);
 }
 
-// The detection on a surface built with settings.grid; the transform reads its own options from `np`.
+// The detection on a surface built with settings.grid, in the input's coordinates; the transform
+// reads its own options from `np`.
 template <typename GT, typename NamedParameters>
 Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const Detection_settings& settings,
                                    const NamedParameters& np)
@@ -75,7 +100,7 @@ Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const De
   throw_if_cancelled(); // the transform is then zero
   stage.move_to(progress_shares::detection_transform, 1.);
   std::vector<Principal_symmetry<GT>> symmetries = principal_symmetries_of_surface(surface, prst, settings);
-  return {std::move(symmetries), std::move(prst)};
+  return to_input(surface.local, Detection<GT>{std::move(symmetries), std::move(prst)});
 }
 
 // The detection on a surface built with the grid options of `np`.
@@ -113,14 +138,17 @@ detection_of_triangle_soup(const PointRange& points, const TriangleRange& triang
   return detection_of_surface(surface, settings, np);
 }
 
-// With a `normal_map`, ISP matches with the normals of the points and fits point to plane.
+// In coordinates centred on the points. With a `normal_map`, ISP matches with the normals of
+// the points and fits point to plane.
 template <typename PointRange, typename NamedParameters>
 Detection<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
 detection_of_points(const PointRange& points, const NamedParameters& np)
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits GT;
-  const std::vector<Dpoint> shape = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const std::vector<Dpoint> input = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const Local_coordinates local = local_coordinates_of(input);
+  const std::vector<Dpoint> shape = to_local(local, input);
   const Detection_settings settings = detection_settings(np);
   const Shape_frame frame = frame_of_points(shape);
   const Grid_settings grid = grid_settings(settings.grid, frame.radius);
@@ -141,7 +169,7 @@ detection_of_points(const PointRange& points, const NamedParameters& np)
     symmetries = refined(Oriented_point_matcher(shape, unit_normals_of_range(points, NP_helper::get_normal_map(points, np))));
   else
     symmetries = refined(Point_matcher(shape));
-  return {std::move(symmetries), std::move(prst)};
+  return to_input(local, Detection<GT>{std::move(symmetries), std::move(prst)});
 }
 
 } // namespace CGAL::Symmetry_transform::internal

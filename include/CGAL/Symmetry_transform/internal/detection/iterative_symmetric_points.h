@@ -340,12 +340,9 @@ double climb(const std::vector<Eigen::Vector3d>& samples, const Dplane& start, c
 // its Gauss-Newton steps are ill-conditioned, its convergence test never settles, and the
 // moments of the point-to-point fit cancel. The matchers and the band test keep the input's
 // coordinates: the queries are moved there and their matches moved back.
-struct Local_frame
+struct Local_frame : Local_coordinates
 {
-  Eigen::Vector3d center;
-
-  Dplane to_local(const Dplane& p) const { return {p.normal, p.offset - p.normal.dot(center)}; }
-  Dplane to_input(const Dplane& p) const { return {p.normal, p.offset + p.normal.dot(center)}; }
+  using Local_coordinates::to_local;
 
   std::vector<Eigen::Vector3d> to_local(const std::vector<Eigen::Vector3d>& points) const
   {
@@ -448,7 +445,7 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
                                       const std::function<bool(const Dplane&)>& abandon = {},
                                       const Walk_matcher* walk_matcher = nullptr)
 {
-  const isp::Local_frame frame{settings.center};
+  const isp::Local_frame frame{{settings.center}};
   const isp::Local_matcher<Matcher> local_matcher(matcher, frame.center);
   std::optional<isp::Local_matcher<Walk_matcher>> local_walk_matcher;
   if(walk_matcher != nullptr) local_walk_matcher.emplace(*walk_matcher, frame.center);

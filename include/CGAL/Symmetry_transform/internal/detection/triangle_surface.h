@@ -26,10 +26,13 @@ namespace CGAL::Symmetry_transform::internal {
 
 // Built in place, neither copied nor moved: the tree and the field refer to `triangles`, the
 // field to the tree. The members are declared, hence built, in the order they depend on each other.
+// Everything but `local` is in the coordinates `local`, centred on the shape, whatever its
+// position (DESIGN.md, invariance): planes and points go through `local` on their way in and out.
 template <typename GT>
 class Triangle_surface
 {
 public:
+  const Local_coordinates local;
   const std::vector<Dtriangle> triangles;
   const Shape_frame frame;   // centre of mass and radius
   const Grid_settings grid;  // of the GEDT
@@ -37,6 +40,7 @@ public:
   const Voxel_grid<GT> gedt;
   const Closest_triangle_field field;
 
+  // `surface_triangles` in the input's coordinates.
   Triangle_surface(std::vector<Dtriangle> surface_triangles, const Grid_options& options)
     : Triangle_surface(std::move(surface_triangles), options, std::vector<std::int32_t>())
   {}
@@ -54,7 +58,8 @@ private:
   // goes to the field.
   Triangle_surface(std::vector<Dtriangle>&& surface_triangles, const Grid_options& options,
                    std::vector<std::int32_t>&& closest_triangles)
-    : triangles(std::move(surface_triangles)), frame(frame_of_triangles(triangles)),
+    : local(local_coordinates_of(surface_triangles)), triangles(to_local(local, std::move(surface_triangles))),
+      frame(frame_of_triangles(triangles)),
       grid(grid_settings(options, frame.radius)),
       matcher([&] { // the first part of the progress of a surface (progress.h)
         Progress_stage stage(0., progress_shares::surface_tree);

@@ -93,25 +93,30 @@ void write_face_outputs(const TriangleMesh& tm, const Symmetric_partition& parti
   output_face_values(parameters::get_parameter(np, internal_np::face_patch), tm, face_index, face_patch);
 }
 
-// `proxies`: the plane of each proxy (its identity patch's), in the kernel GT.
+// `proxies`: the plane of each proxy (its identity patch's), in the kernel GT and the input's
+// coordinates (the partition's are `frame`'s).
 template <typename GT, typename NamedParameters>
-void write_proxies(const Symmetric_partition& partition, const NamedParameters& np)
+void write_proxies(const Symmetric_partition& partition, const Local_coordinates& frame, const NamedParameters& np)
 {
   std::vector<typename GT::Plane_3> planes;
   for(const auto& p : partition.proxies())
-    planes.push_back(typename GT::Plane_3(to_point<GT>(p.center), to_vector<GT>(p.normal)));
+    planes.push_back(typename GT::Plane_3(to_point<GT>(frame.to_input(p.center)), to_vector<GT>(p.normal)));
   output_values(parameters::get_parameter(np, internal_np::proxies), planes);
 }
 
-// `anchors`, `triangles` and `output_mesh`.
+// `anchors`, `triangles` and `output_mesh`, in the input's coordinates (those of `out` are `frame`'s).
 template <typename GT, typename NamedParameters>
-void write_mesh_outputs(const Remeshing_output& out, const NamedParameters& np)
+void write_mesh_outputs(const Remeshing_output& out, const Local_coordinates& frame, const NamedParameters& np)
 {
+  std::vector<Eigen::Vector3d> anchors;
   std::vector<typename GT::Point_3> anchor_points;
-  for(const Eigen::Vector3d& a : out.anchors) anchor_points.push_back(to_point<GT>(a));
+  for(const Eigen::Vector3d& a : out.anchors) {
+    anchors.push_back(frame.to_input(a));
+    anchor_points.push_back(to_point<GT>(anchors.back()));
+  }
   output_values(parameters::get_parameter(np, internal_np::anchors), anchor_points);
   output_values(parameters::get_parameter(np, internal_np::triangles), out.triangles);
-  build_output_mesh(out.anchors, out.triangles, parameters::get_parameter(np, internal_np::st_output_mesh));
+  build_output_mesh(anchors, out.triangles, parameters::get_parameter(np, internal_np::st_output_mesh));
 }
 
 } // namespace CGAL::Symmetry_transform::internal

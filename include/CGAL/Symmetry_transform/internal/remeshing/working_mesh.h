@@ -118,6 +118,9 @@ private:
 
 struct Remeshing_mesh
 {
+  // `points` are relative to the centre of the input's bounding box (the proxies' moments, the
+  // cuts and the anchors are sums and differences of positions).
+  Local_coordinates frame;
   static constexpr std::size_t none = std::size_t(-1);
 
   std::vector<Eigen::Vector3d> points;
@@ -159,12 +162,8 @@ struct Remeshing_mesh
   // and the planes of each vertex.
   void split_along_planes(const std::vector<Dplane>& planes)
   {
-    Eigen::Vector3d low = points.front(), high = low;
-    for(const Eigen::Vector3d& p : points) {
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-    diagonal = (high - low).norm();
+    const Bounding_box box(points);
+    diagonal = (box.high - box.low).norm();
     const double on_plane = on_plane_tolerance * diagonal;
     for(const Dplane& plane : planes) {
       poll_progress(); // each step takes a tenth of a second on a million faces (progress.h)
@@ -275,12 +274,13 @@ void check_index_map(const Range& range, const IndexMap& index, std::size_t coun
   }
 }
 
-// The working mesh of `tm`, split along `planes`: its vertices numbered in the order of
-// vertices(tm), through the vertex index map (a vector, not a hash map, from index to number);
-// its faces in the order of faces(tm), each with the face index of its input face as `origin`.
+// The working mesh of `tm`, in coordinates relative to its centre, split along `planes` (in
+// those coordinates): its vertices numbered in the order of vertices(tm), through the vertex
+// index map (a vector, not a hash map, from index to number); its faces in the order of
+// faces(tm), each with the face index of its input face as `origin`.
 // Throws on the bad meshes of triangles_of_mesh() and on an invalid index map.
 template <typename TriangleMesh, typename NamedParameters>
-Remeshing_mesh make_working_mesh(const TriangleMesh& tm, const std::vector<Dplane>& planes, const NamedParameters& np)
+Remeshing_mesh make_working_mesh(const TriangleMesh& tm, std::vector<Dplane>& planes, const NamedParameters& np)
 {
   triangles_of_mesh(tm, np); // the checks of the input
   const auto vpm = vertex_point_map(tm, np);
@@ -303,6 +303,9 @@ Remeshing_mesh make_working_mesh(const TriangleMesh& tm, const std::vector<Dplan
     m.origin.push_back(get(face_index, f));
   }
   m.number_of_input_faces = m.faces.size();
+  m.frame.center = Bounding_box(m.points).center();
+  for(Eigen::Vector3d& p : m.points) p = m.frame.to_local(p);
+  for(Dplane& plane : planes) plane = m.frame.to_local(plane);
   poll_progress();
   m.split_along_planes(planes);
   return m;

@@ -57,6 +57,16 @@ std::vector<Eigen::Vector3d> normals_at(const std::vector<Eigen::Vector3d>& samp
   return normals;
 }
 
+// Rotations in the coordinates `local`, moved to the input's.
+template <typename GT>
+std::vector<Rotational_symmetry<GT>> to_input(const Local_coordinates& local, std::vector<Rotational_symmetry<GT>> rotations)
+{
+  for(Rotational_symmetry<GT>& r : rotations)
+    r.axis = typename GT::Line_3(to_point<GT>(local.to_input(to_eigen(to_dpoint(r.axis.point())))), r.axis.to_vector());
+  return rotations;
+}
+
+// `extra`: further candidate axes, in the input's coordinates, as the result.
 template <typename GT, typename NamedParameters>
 std::vector<Rotational_symmetry<GT>> rotations_of_surface(const Triangle_surface<GT>& surface, int max_order,
                                                           const std::vector<Axis_candidate>& extra, const NamedParameters& np)
@@ -73,7 +83,9 @@ std::vector<Rotational_symmetry<GT>> rotations_of_surface(const Triangle_surface
     surface.gedt, coarse, grid_settings(coarse_np, coarse.radius()).sigma(), samples, normals, mass, surface.matcher,
     surface.field, isp_settings(np, surface.gedt), max_order,
     parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
-  return rotational_symmetries(search, extra);
+  std::vector<Axis_candidate> local_extra = extra;
+  for(Axis_candidate& c : local_extra) c.axis.point = surface.local.to_local(c.axis.point);
+  return to_input(surface.local, rotational_symmetries(search, local_extra));
 }
 
 template <typename PointRange, typename NamedParameters>
@@ -82,7 +94,9 @@ rotations_of_points(const PointRange& points, int max_order, const NamedParamete
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits GT;
-  const std::vector<Dpoint> input = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const std::vector<Dpoint> read = points_of_range(points, NP_helper::get_const_point_map(points, np));
+  const Local_coordinates local = local_coordinates_of(read);
+  const std::vector<Dpoint> input = to_local(local, read); // centred on the points
   Progress_stage stage(0., rotation_grids_share_of_points);
   const Shape_frame frame = frame_of_points(input);
   const Voxel_grid<GT> gedt = gaussian_distance_transform_of_points<GT>(input, frame, grid_settings(np, frame.radius));
@@ -98,7 +112,7 @@ rotations_of_points(const PointRange& points, int max_order, const NamedParamete
     gedt, coarse, grid_settings(coarse_np, coarse.radius()).sigma(), samples, normals, mass, matcher, matcher,
     isp_settings(np, gedt), max_order,
     parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
-  return rotational_symmetries(search, {});
+  return to_input(local, rotational_symmetries(search, {}));
 }
 
 } // namespace CGAL::Symmetry_transform::internal

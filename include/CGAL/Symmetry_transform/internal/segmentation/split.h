@@ -62,21 +62,24 @@ struct Split
 // thesis, "the average value in the GEDT of a point of face i reflected by plane j", at the
 // face_support_points() of the face. The GEDT is evaluated exactly, from the distance to the nearest
 // triangle that the detection's closest-triangle field offers, with the Gaussian width `sigma`.
-// Points reflected beyond the field's band get 0.
+// Points reflected beyond the field's band get 0. The field is in the coordinates `local` (those
+// of its surface), the mesh and the planes in the input's.
 inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
                                      const std::vector<Principal_symmetry<Dkernel>>& planes,
-                                     const Closest_triangle_field& field, double sigma, unsigned threads)
+                                     const Closest_triangle_field& field, const Local_coordinates& local, double sigma,
+                                     unsigned threads)
 {
   const double inverse_two_sigma2 = 1. / (2. * sigma * sigma);
   std::vector<Dplane> mirrors;
-  for(const auto& plane : planes) mirrors.push_back(to_dplane(plane.plane));
+  for(const auto& plane : planes) mirrors.push_back(local.to_local(to_dplane(plane.plane)));
   Eigen::MatrixXd features = Eigen::MatrixXd::Zero(Eigen::Index(faces.size()), Eigen::Index(planes.size()));
   // Face by face, the points of a face made when they are used: a table of them would be 96
   // bytes per face, a hundred megabytes on a million faces.
   parallel_for(faces.size(), threads, [&](unsigned, std::size_t begin, std::size_t end) {
     for(std::size_t i = begin; i < end; ++i) {
       const std::array<Eigen::Vector3d, 3>& t = mesh.triangles[faces[i]];
-      const std::array<Eigen::Vector3d, 4> points = face_support_points(t[0], t[1], t[2]);
+      const std::array<Eigen::Vector3d, 4> points =
+        face_support_points(local.to_local(t[0]), local.to_local(t[1]), local.to_local(t[2]));
       for(std::size_t j = 0; j < mirrors.size(); ++j) {
         double sum = 0.;
         for(const Eigen::Vector3d& p : points) {
@@ -139,7 +142,7 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
   // Half the detection's Gaussian width: supports closer to 0 or 1 (a face is mirrored or it is
   // not) cluster more cleanly.
   const double sigma = feature_width_factor * isp_settings(np, surface.gedt).sigma;
-  const Eigen::MatrixXd features = face_supports(mesh, faces, split.planes, surface.field, sigma, threads);
+  const Eigen::MatrixXd features = face_supports(mesh, faces, split.planes, surface.field, surface.local, sigma, threads);
   std::vector<double> areas(faces.size());
   double area = 0.;
   for(std::size_t i = 0; i < faces.size(); ++i) {
