@@ -23,6 +23,7 @@
 #include <CGAL/Symmetry_transform/symmetry_descriptor.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 #include <CGAL/Symmetry_transform/symmetry_segmentation.h>
+#include <CGAL/Symmetry_transform/viewpoint_selection.h>
 
 #include "Symmetry_transform_test_shapes.h"
 
@@ -31,8 +32,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace ST = CGAL::Symmetry_transform;
@@ -46,8 +49,13 @@ typedef ST::Rotational_symmetry<K> Axis;
 const std::array<unsigned, 4> thread_counts = {1, 2, 3, 8};
 // A shape a million radii from the origin: its coordinates keep about ten digits of its size.
 constexpr double far_radii = 1e6;
+// As far as a shape may be (beyond 4.5e9 radii, it is refused): its coordinates keep about seven
+// digits of its size, and a sum of squares of them none.
+constexpr double farthest_radii = 1e9;
 // What "the moved result" means here: normals to 1e-6, positions to 1e-6 of the radius.
 constexpr double invariance_tolerance = 1e-6;
+// What it means for a Monte Carlo transform (relative L2 error), whose own error is about 1e-2.
+constexpr double monte_carlo_invariance_tolerance = 1e-4;
 
 const auto grid_32 = CGAL::parameters::grid_resolution(32).random_seed(1);
 
@@ -147,7 +155,9 @@ void expect_planes_move_with(const Shape<Surface_mesh>& shape, const Motion& m)
   const std::vector<Symmetry> here = ST::detect_principal_symmetries(shape.mesh, grid_32),
                               there = ST::detect_principal_symmetries(far.mesh, grid_32);
   EXPECT_TRUE(finds_exact_planes(far.planes, there, cr.center, cr.radius));
-  if(here.size() == shape.planes.size()) EXPECT_TRUE(same_planes(planes_of(here, m), planes_of(there), cr.center, cr.radius));
+  if(here.size() == shape.planes.size()) {
+    EXPECT_TRUE(same_planes(planes_of(here, m), planes_of(there), cr.center, cr.radius));
+  }
 }
 
 // Axes equal up to orientation: directions within the tolerance, and `center` as far from both.
@@ -163,6 +173,80 @@ void expect_planes_move_with(const Shape<Surface_mesh>& shape, const Motion& m)
     return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "axes " << a.axis << " (order " << a.order << ") and " << b.axis
                                        << " (order " << b.order << "): sine " << sine << ", apart " << apart;
+}
+
+// The forms other than a mesh: its vertices and triangles as a soup, points sampled on it (with
+// the normal of their face, for the oriented forms).
+struct Soup
+{
+  std::vector<Point_3> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+Soup soup_of(const Surface_mesh& mesh)
+{
+  Soup soup;
+  CGAL::Polygon_mesh_processing::polygon_mesh_to_polygon_soup(mesh, soup.points, soup.triangles);
+  return soup;
+}
+
+typedef std::pair<Point_3, Vector_3> Point_with_normal;
+typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
+typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+
+// `per_face` points uniform on each triangle (same seed, same points), with its unit normal.
+std::vector<Point_with_normal> oriented_samples(const Surface_mesh& mesh, int per_face)
+{
+  CGAL::Random rng(19);
+  std::vector<Point_with_normal> result;
+  for(auto f : faces(mesh)) {
+    std::vector<Point_3> corners;
+    for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) corners.push_back(mesh.point(v));
+    Vector_3 normal = CGAL::normal(corners[0], corners[1], corners[2]);
+    normal = normal / std::sqrt(normal.squared_length());
+    for(int k = 0; k < per_face; ++k) {
+      double u = rng.get_double(), v = rng.get_double();
+      if(u + v > 1.) std::tie(u, v) = std::make_pair(1. - u, 1. - v);
+      result.emplace_back(corners[0] + u * (corners[1] - corners[0]) + v * (corners[2] - corners[0]), normal);
+    }
+  }
+  return result;
+}
+
+std::vector<Point_with_normal> moved(std::vector<Point_with_normal> points, const Motion& m)
+{
+  for(Point_with_normal& p : points) p = {m.transform(p.first), m.transform(p.second)};
+  return points;
+}
+
+std::vector<Point_3> positions(const std::vector<Point_with_normal>& points)
+{
+  std::vector<Point_3> result;
+  for(const Point_with_normal& p : points) result.push_back(p.first);
+  return result;
+}
+
+// Distance between points over the radius.
+double apart(const Point_3& a, const Point_3& b, double radius)
+{
+  return std::sqrt(CGAL::squared_distance(a, b)) / radius;
+}
+
+// The sine of the angle between the expected frame axes (moved) and the found ones, the largest.
+double largest_axis_sine(const ST::Symmetry_frame<K>& expected, const ST::Symmetry_frame<K>& found)
+{
+  double sine = 0.;
+  for(std::size_t i = 0; i < 3; ++i)
+    sine = (std::max)(sine, std::sqrt(CGAL::cross_product(expected.axes[i], found.axes[i]).squared_length() /
+                                      (expected.axes[i].squared_length() * found.axes[i].squared_length())));
+  return sine;
+}
+
+ST::Symmetry_frame<K> moved(ST::Symmetry_frame<K> frame, const Motion& m)
+{
+  frame.center = m.transform(frame.center);
+  for(Vector_3& a : frame.axes) a = m.transform(a);
+  return frame;
 }
 
 } // namespace
@@ -375,4 +459,238 @@ TEST(InputForm, SoupAndPolyhedronGiveThePlanesOfTheirMeshFarFromTheOrigin)
   CGAL::copy_face_graph(far.mesh, polyhedron);
   EXPECT_TRUE(same_planes(planes_of(ST::detect_principal_symmetries(far.mesh, grid_32)),
                           planes_of(ST::detect_principal_symmetries(polyhedron, grid_32)), cr.center, cr.radius));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The remeshing, the axes from known planes, the viewpoints, and the point-set, oriented-point
+// and soup forms.
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+const auto proxies_24 = CGAL::parameters::max_number_of_proxies(24);
+
+// A shape moved far away by a translation (its coordinates rounded there), and the moved shape
+// brought back: the translation of a double by a much longer one, back, is exact (Sterbenz), so
+// the two are exact translates of each other, the same shape. A result that depends on the shape
+// to the last bit (a choice among equal values, a flat ridge) must then still move with it.
+template <typename S>
+struct Translates
+{
+  S here, there;
+  Motion motion; // from here to there
+};
+
+template <typename S>
+Translates<S> exact_translates(const S& shape, const Motion& translation)
+{
+  const S there = moved(shape, translation);
+  return {moved(there, translation.inverse()), there, translation};
+}
+
+// The anchors (their coordinates, moved back by the inverse of m) and the triangles of the remeshing.
+std::vector<double> remeshing_of(const Surface_mesh& mesh, const std::vector<Plane_3>& planes, const Motion& m, unsigned threads)
+{
+  std::vector<Point_3> anchors;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  ST::symmetric_approximate_triangle_mesh(mesh, planes, proxies_24.number_of_threads(threads)
+                                                          .anchors(std::back_inserter(anchors))
+                                                          .triangles(std::back_inserter(triangles)));
+  std::vector<double> c;
+  for(const Point_3& p : anchors) {
+    const Point_3 back = m.inverse().transform(p);
+    c.insert(c.end(), {back.x(), back.y(), back.z()});
+  }
+  for(const auto& t : triangles) c.insert(c.end(), {double(t[0]), double(t[1]), double(t[2])});
+  return c;
+}
+
+} // namespace
+
+TEST(ThreadCount, ChangesNoBitOfTheRemeshingTheAxesFromPlanesOrThePointsWithNormals)
+{
+  const Shape<Surface_mesh> e = ellipsoid<Surface_mesh>();
+  expect_same_for_every_thread_count(
+    [&](unsigned t) { return remeshing_of(e.mesh, e.planes, Motion(CGAL::IDENTITY), t); });
+  const Shape<Surface_mesh> b = test_box();
+  const std::vector<Symmetry> planes = ST::detect_principal_symmetries(b.mesh, grid_32);
+  expect_same_for_every_thread_count(
+    [&](unsigned t) { return coefficients(ST::rotational_symmetries(b.mesh, planes, grid_32.number_of_threads(t))); });
+  const std::vector<Point_with_normal> points = oriented_samples(test_shape().mesh, 8);
+  expect_same_for_every_thread_count([&](unsigned t) {
+    return coefficients(ST::detect_principal_symmetries_of_points(
+      points, grid_32.point_map(Point_map()).normal_map(Normal_map()).number_of_threads(t)));
+  });
+}
+
+// The anchors move with the shape within 1e-6 of its radius, and the triangles are the same. The
+// ellipsoid is symmetric to the last bit, and its moved copy is not (its coordinates are rounded
+// to a millionth of the radius's digits): the seeds of the proxies, chosen among faces of equal
+// error, may then differ. The copy brought back to the origin is its exact translate (see
+// exact_translates()): the remeshing of the two must agree, there and as far as a shape may be.
+TEST(Position, RemeshingMovesWithAShapeAMillionAndABillionRadiiAway)
+{
+  CGAL::Random rng(20);
+  const Shape<Surface_mesh> e = ellipsoid<Surface_mesh>();
+  const double radius = center_and_radius(e.mesh).radius;
+  for(double radii : {far_radii, farthest_radii}) {
+    const Translates<Shape<Surface_mesh>> t = exact_translates(e, far_motion(rng, radii, radius));
+    const std::vector<double> here = remeshing_of(t.here.mesh, t.here.planes, Motion(CGAL::IDENTITY), 2),
+                              there = remeshing_of(t.there.mesh, t.there.planes, t.motion, 2);
+    ASSERT_EQ(here.size(), there.size()) << radii << " radii away";
+    ASSERT_FALSE(here.empty());
+    double worst = 0.;
+    for(std::size_t i = 0; i < here.size(); ++i) worst = (std::max)(worst, std::abs(here[i] - there[i]));
+    EXPECT_LE(worst / radius, invariance_tolerance) << radii << " radii away";
+  }
+}
+
+TEST(Position, AxesFromKnownPlanesMoveWithABoxAMillionRadiiAway)
+{
+  CGAL::Random rng(21);
+  const Shape<Surface_mesh> s = test_box();
+  const Motion m = far_motion(rng, far_radii, center_and_radius(s.mesh).radius);
+  const Shape<Surface_mesh> far = moved(s, m);
+  const Center_and_radius cr = center_and_radius(far.mesh);
+  std::vector<Symmetry> planes_here, planes_there;
+  for(const Plane_3& p : s.planes) planes_here.push_back({p, 1., 1.});
+  for(const Plane_3& p : far.planes) planes_there.push_back({p, 1., 1.});
+  const std::vector<Axis> here = ST::rotational_symmetries(s.mesh, planes_here, grid_32),
+                          there = ST::rotational_symmetries(far.mesh, planes_there, grid_32);
+  ASSERT_EQ(here.size(), 3u);
+  ASSERT_EQ(there.size(), here.size());
+  for(const Axis& a : here) {
+    Axis expected = a;
+    expected.axis = a.axis.transform(m);
+    EXPECT_TRUE(std::any_of(there.begin(), there.end(), [&](const Axis& b) { return same_axis(expected, b, cr.center, cr.radius); }));
+  }
+}
+
+// Scored views depend on the normals and measures only: the same views for the planes found on a
+// box and on the box a million radii away or scaled by 1e-6 and 1e6.
+TEST(Position, ViewpointsDoNotChangeAMillionRadiiAwayOrAtAnyScale)
+{
+  CGAL::Random rng(22);
+  const Shape<Surface_mesh> s = test_box();
+  const double radius = center_and_radius(s.mesh).radius;
+  auto views_of = [](const Surface_mesh& mesh) {
+    std::vector<ST::Viewpoint<K>> views;
+    ST::best_viewpoints(ST::detect_principal_symmetries(mesh, grid_32), std::back_inserter(views));
+    return views;
+  };
+  const std::vector<ST::Viewpoint<K>> here = views_of(s.mesh);
+  ASSERT_FALSE(here.empty());
+  for(const Motion& m : {far_motion(rng, far_radii, radius), far_motion(rng, 3., radius, 1e-6), far_motion(rng, 3., radius, 1e6)}) {
+    const std::vector<ST::Viewpoint<K>> there = views_of(moved(s, m).mesh);
+    ASSERT_EQ(here.size(), there.size());
+    for(const ST::Viewpoint<K>& v : here) // views of equal scores (the box's) may come in either order
+      EXPECT_TRUE(std::any_of(there.begin(), there.end(), [&](const ST::Viewpoint<K>& w) {
+        return std::sqrt((v.direction - w.direction).squared_length()) <= invariance_tolerance &&
+               std::abs(v.score - w.score) <= invariance_tolerance;
+      })) << "view " << v.direction << " (score " << v.score << ") missing";
+  }
+}
+
+// Points sampled on a box (each with the normal of its face for the oriented form), a million
+// radii away and scaled: the frame, the centre of the PST, the descriptor, the error of a plane
+// and the planes of the oriented points move with them.
+TEST(Position, PointSetFormsMoveWithTheirPointsAMillionRadiiAwayAndAtAnyScale)
+{
+  CGAL::Random rng(23);
+  const Shape<Surface_mesh> s = test_box();
+  const std::vector<Point_with_normal> oriented = oriented_samples(s.mesh, 40);
+  const std::vector<Point_3> points = positions(oriented);
+  const double radius = center_and_radius(s.mesh).radius;
+  const auto with_normals = grid_32.point_map(Point_map()).normal_map(Normal_map());
+  const ST::Symmetry_frame<K> frame = ST::symmetry_frame_of_points(points, grid_32);
+  const Point_3 pst_center = ST::point_symmetry_transform_of_points(points, grid_32).center_of_symmetry();
+  const auto descriptor = ST::symmetry_descriptor_of_points(points, grid_32);
+  const Plane_3 turned = rotated_plane(s.planes.front(), center_and_radius(s.mesh).center, Vector_3(0, 0, 1), 5.);
+  const double error = ST::symmetry_distance_error_of_points(points, turned);
+  for(const Motion& m : {far_motion(rng, far_radii, radius), far_motion(rng, 3., radius, 1e-6), far_motion(rng, 3., radius, 1e6)}) {
+    const std::vector<Point_3> far_points = positions(moved(oriented, m));
+    const Shape<Surface_mesh> far = moved(s, m);
+    const Center_and_radius cr = center_and_radius(far.mesh);
+    const ST::Symmetry_frame<K> far_frame = ST::symmetry_frame_of_points(far_points, grid_32);
+    EXPECT_LE(apart(moved(frame, m).center, far_frame.center, cr.radius), invariance_tolerance);
+    EXPECT_LE(largest_axis_sine(moved(frame, m), far_frame), invariance_tolerance);
+    EXPECT_LE(apart(m.transform(pst_center), ST::point_symmetry_transform_of_points(far_points, grid_32).center_of_symmetry(),
+                    cr.radius),
+              invariance_tolerance);
+    EXPECT_LE(ST::descriptor_distance(descriptor, ST::symmetry_descriptor_of_points(far_points, grid_32)), invariance_tolerance);
+    EXPECT_NEAR(ST::symmetry_distance_error_of_points(far_points, moved(turned, m)), error, invariance_tolerance);
+  }
+  // The planes of oriented samples are approximate (the samples near an edge have mirror images
+  // on the next face): exact translates, a million radii apart, give the same planes.
+  const Translates<std::vector<Point_with_normal>> t = exact_translates(oriented, far_motion(rng, far_radii, radius));
+  const Center_and_radius cr = center_and_radius(moved(s, t.motion).mesh);
+  const std::vector<Symmetry> here = ST::detect_principal_symmetries_of_points(t.here, with_normals);
+  ASSERT_EQ(here.size(), 3u);
+  EXPECT_TRUE(same_planes(planes_of(here, t.motion), planes_of(ST::detect_principal_symmetries_of_points(t.there, with_normals)),
+                          cr.center, cr.radius));
+}
+
+// Exact translates (see exact_translates()) a million radii apart: the transforms, the centre of
+// the PST, the descriptor, the error and the supports of a plane and the segments of the one are
+// those of the other, moved. (The refined planes, axes and frames of approximate symmetries are
+// not compared: their refinements still query closest points in the input's coordinates, and a
+// flat ridge turns a change at that rounding level into one of up to 1e-4; the manual, section
+// Invariance and Determinism.)
+TEST(Position, ExactTranslatesAMillionRadiiApartGiveTheSameTransformsErrorsAndSegments)
+{
+  CGAL::Random rng(25);
+  for(const Shape<Surface_mesh>& s : {test_shape(), test_box()}) {
+    const double radius = center_and_radius(s.mesh).radius;
+    const Translates<Shape<Surface_mesh>> t = exact_translates(s, far_motion(rng, far_radii, radius));
+    const ST::Point_symmetry_transform<K> here = ST::point_symmetry_transform(t.here.mesh, grid_32),
+                                          there = ST::point_symmetry_transform(t.there.mesh, grid_32);
+    EXPECT_LE(max_abs_difference(here.grid().values(), there.grid().values()), invariance_tolerance);
+    EXPECT_LE(apart(t.motion.transform(here.center_of_symmetry()), there.center_of_symmetry(), radius), invariance_tolerance);
+    // A Monte Carlo vote drawn at the edge of its voxel's probability interval may go to the
+    // next voxel (the GEDTs differ by 1e-10): the transforms agree far within their error (1e-2).
+    EXPECT_LE(relative_l2_error(ST::reflective_symmetry_transform(t.here.mesh, grid_32).values(),
+                                ST::reflective_symmetry_transform(t.there.mesh, grid_32).values()),
+              monte_carlo_invariance_tolerance);
+    EXPECT_LE(ST::descriptor_distance(ST::symmetry_descriptor(t.here.mesh, grid_32), ST::symmetry_descriptor(t.there.mesh, grid_32)),
+              invariance_tolerance);
+    const Plane_3 turned = rotated_plane(t.here.planes.front(), center_and_radius(t.here.mesh).center, Vector_3(0, 0, 1), 5.);
+    EXPECT_NEAR(ST::symmetry_distance_error(t.there.mesh, moved(turned, t.motion)), ST::symmetry_distance_error(t.here.mesh, turned),
+                invariance_tolerance);
+    std::vector<double> supports_here(num_faces(t.here.mesh)), supports_there(num_faces(t.there.mesh));
+    EXPECT_NEAR(ST::symmetry_support(t.there.mesh, moved(turned, t.motion), CGAL::make_property_map(supports_there)),
+                ST::symmetry_support(t.here.mesh, turned, CGAL::make_property_map(supports_here)), invariance_tolerance);
+    EXPECT_LE(max_abs_difference(supports_here, supports_there), invariance_tolerance);
+    std::vector<std::size_t> segments_here(num_faces(t.here.mesh)), segments_there(num_faces(t.there.mesh));
+    ST::segment_by_symmetry(t.here.mesh, CGAL::make_property_map(segments_here), grid_32.max_segmentation_depth(1));
+    ST::segment_by_symmetry(t.there.mesh, CGAL::make_property_map(segments_there), grid_32.max_segmentation_depth(1));
+    EXPECT_EQ(segments_here, segments_there);
+  }
+}
+
+// The soup of a box a million radii away: its frame, the centre of its PST, the error and the
+// support of a plane move with it (the planes: InputForm below).
+TEST(Position, SoupFormsMoveWithTheirPointsAMillionRadiiAway)
+{
+  CGAL::Random rng(24);
+  const Shape<Surface_mesh> s = test_box();
+  const Motion m = far_motion(rng, far_radii, center_and_radius(s.mesh).radius);
+  const Shape<Surface_mesh> far = moved(s, m);
+  const double radius = center_and_radius(far.mesh).radius;
+  const Soup here = soup_of(s.mesh), there = soup_of(far.mesh);
+  const ST::Symmetry_frame<K> frame = ST::symmetry_frame_of_triangle_soup(here.points, here.triangles, grid_32),
+                              far_frame = ST::symmetry_frame_of_triangle_soup(there.points, there.triangles, grid_32);
+  EXPECT_LE(apart(moved(frame, m).center, far_frame.center, radius), invariance_tolerance);
+  EXPECT_LE(largest_axis_sine(moved(frame, m), far_frame), invariance_tolerance);
+  EXPECT_LE(apart(m.transform(ST::point_symmetry_transform_of_triangle_soup(here.points, here.triangles, grid_32).center_of_symmetry()),
+                  ST::point_symmetry_transform_of_triangle_soup(there.points, there.triangles, grid_32).center_of_symmetry(), radius),
+            invariance_tolerance);
+  const Plane_3 turned = rotated_plane(s.planes.front(), center_and_radius(s.mesh).center, Vector_3(0, 1, 0), 5.);
+  EXPECT_NEAR(ST::symmetry_distance_error_of_triangle_soup(there.points, there.triangles, moved(turned, m)),
+              ST::symmetry_distance_error_of_triangle_soup(here.points, here.triangles, turned), invariance_tolerance);
+  std::vector<double> supports_here, supports_there;
+  EXPECT_NEAR(ST::symmetry_support_of_triangle_soup(there.points, there.triangles, moved(turned, m), std::back_inserter(supports_there)),
+              ST::symmetry_support_of_triangle_soup(here.points, here.triangles, turned, std::back_inserter(supports_here)),
+              invariance_tolerance);
+  ASSERT_EQ(supports_here.size(), supports_there.size());
+  for(std::size_t f = 0; f < supports_here.size(); ++f) EXPECT_NEAR(supports_here[f], supports_there[f], invariance_tolerance);
 }
