@@ -123,6 +123,17 @@ typename GT::Vector_3 to_vector(const Eigen::Vector3d& v)
   return CGAL::Cartesian_converter<Dkernel, GT>()(Dvector(v.x(), v.y(), v.z()));
 }
 
+// The smallest n <= max_n such that x in [0, 1/2] lies within `tolerance` of a fraction m / n
+// (then in lowest terms), or 0 if there is none: the order of a rotation by 2 pi x, or of the
+// one that two planes meeting at pi x generate.
+inline int fraction_denominator(double x, int max_n, double tolerance)
+{
+  for(int n = 1; n <= max_n; ++n)
+    for(int m = 0; 2 * m <= n; ++m)
+      if(std::abs(x - double(m) / double(n)) < tolerance) return n;
+  return 0;
+}
+
 } // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_GEOMETRY_H

@@ -14,6 +14,7 @@
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/detection/candidates.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/detection/plane_group.h>
 #include <CGAL/Symmetry_transform/internal/detection/settings.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
@@ -36,6 +37,9 @@ constexpr double merge_reach_in_bins = 2.;
 // Most candidates are dropped as duplicates or unstable; beyond this many per plane asked for,
 // the weaker ones would be cut off anyway.
 constexpr std::size_t candidates_per_plane = 10;
+// Exact planes are maxima of the transform nearly as high as the strongest (0.95 to 1.03 of it
+// on prisms and Platonic solids, against 0.7 at most for their partial symmetries).
+constexpr double exact_candidate_fraction = 0.8;
 
 // The planes accepted so far (the coarse and the refined plane of each candidate accepted).
 struct Accepted_planes
@@ -97,7 +101,113 @@ void print_candidate(const Reflective_symmetry_transform<GT>& prst, const std::a
             << (outcome.verdict ? ", dropped: " : ", accepted") << (outcome.verdict ? outcome.verdict : "") << "\n";
 }
 
+// The image `image` of a plane by the reflection in another, refined from there (no coarse
+// phase: the images of exact planes are exact). None if the refinement heads for an accepted
+// plane or away from the image, or maps less of the shape than `least_support`.
+template <typename Matcher, typename Walk_matcher>
+std::optional<Isp_result> refined_image(const Dplane& image, double least_support, const std::vector<Eigen::Vector3d>& samples,
+                                        const Matcher& matcher, const Isp_settings& settings,
+                                        const Walk_matcher* walk_matcher, const Accepted_planes& accepted)
+{
+  auto away = [&](const Dplane& plane) {
+    return accepted.near(plane, merge_reach_in_bins) ||
+           !same_plane(image, plane, unstable_reach_in_bins * accepted.angle, unstable_reach_in_bins * accepted.distance,
+                       accepted.center);
+  };
+  const Isp_result refined =
+    iterative_symmetric_points(samples, image, matcher, settings, Isp_phase::FINE, away, walk_matcher);
+  if(away(refined.plane) || !(refined.support >= least_support - group_support_tolerance)) return std::nullopt;
+  return refined;
+}
+
+// The group the exact planes accepted so far generate (plane_group.h): which planes generate,
+// how many of them have met all those before them, the images refined already, and how many
+// planes the group added.
+struct Plane_group_state
+{
+  std::vector<std::size_t> generators; // indices in the result
+  std::size_t paired;
+  Accepted_planes tried;
+  std::size_t added;
+  bool infinite; // two exact planes meet at an angle no pi m / n: a continuous family, cut as found
+};
+
+// The planes of the group that the exact planes of `result` generate, appended to it: each image
+// of one by the reflection in another that is not there yet, refined and tested. Accepted exact
+// images generate in turn; the group adds at most largest_plane_group() planes. False if cancelled.
+template <typename GT, typename Matcher, typename Walk_matcher>
+bool complete_plane_group(const Voxel_grid<GT>& gedt, const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher,
+                          const Isp_settings& settings, int max_order, const Walk_matcher* walk_matcher,
+                          Accepted_planes& accepted, Plane_group_state& group, std::vector<Principal_symmetry<GT>>& result)
+{
+  if(!result.empty() && result.back().support >= group_generator_support) group.generators.push_back(result.size() - 1);
+  for(; group.paired < group.generators.size() && !group.infinite; ++group.paired) // new generators join the loop
+    for(std::size_t h = 0; h < group.paired; ++h) {
+      const Principal_symmetry<GT> g_plane = result[group.generators[group.paired]], h_plane = result[group.generators[h]];
+      const Dplane a = to_dplane(g_plane.plane), b = to_dplane(h_plane.plane);
+      if(generated_order(a, b, max_order) == 0) {
+        // Parallel planes (of a bounded shape, never both exact) generate nothing; others a
+        // continuous family (a sphere's, a surface of revolution's), which no list holds.
+        group.infinite = group.infinite || !parallel_planes(a, b);
+        continue;
+      }
+      for(const Dplane& image : {reflected(a, b), reflected(b, a)}) {
+        if(group.added >= largest_plane_group(max_order) || accepted.near(image, merge_reach_in_bins) ||
+           group.tried.near(image, merge_reach_in_bins))
+          continue;
+        group.tried.planes.push_back(image);
+        const std::optional<std::optional<Isp_result>> refined = unless_cancelled([&] {
+          return refined_image(image, (std::min)(g_plane.support, h_plane.support), samples, matcher, settings, walk_matcher,
+                               accepted);
+        });
+        if(!refined) return false;
+        if(!*refined) continue;
+        accepted.planes.push_back((*refined)->plane);
+        const typename GT::Plane_3 plane = to_plane<GT>((*refined)->plane);
+        result.push_back({plane, symmetry_measure(gedt, plane), (*refined)->support});
+        ++group.added;
+        if((*refined)->support >= group_generator_support) group.generators.push_back(result.size() - 1);
+      }
+    }
+  return true;
+}
+
+// Whether to refine the candidate at `bin` once `result` holds max_planes planes: only if exact
+// planes were found (the shape has a group, whose other planes may come later among the
+// candidates) and the candidate is nearly as strong as the strongest, as exact planes are.
+template <typename GT>
+bool worth_refining_beyond_cap(const Reflective_symmetry_transform<GT>& prst, const std::array<std::size_t, 3>& bin,
+                               const std::array<std::size_t, 3>& strongest, const Plane_group_state& group)
+{
+  return !group.generators.empty() && !group.infinite && prst.value(bin) >= exact_candidate_fraction * prst.value(strongest);
+}
+
+// The planes to return, strongest first: every exact one unless the user chose the cap or the
+// exact planes form a continuous family (a finite group is not cut), then the strongest others
+// up to max_planes in all.
+template <typename GT>
+void keep_groups_and_strongest(std::vector<Principal_symmetry<GT>>& result, const Candidate_settings& options,
+                               bool infinite_group)
+{
+  std::stable_sort(result.begin(), result.end(),
+                   [](const Principal_symmetry<GT>& a, const Principal_symmetry<GT>& b) { return a.symmetry > b.symmetry; });
+  const std::size_t max_planes = options.max_planes;
+  auto exact = [&](const Principal_symmetry<GT>& s) {
+    return !options.max_planes_given && !infinite_group && s.support >= group_generator_support;
+  };
+  std::size_t others = max_planes - (std::min)(max_planes, std::size_t(std::count_if(result.begin(), result.end(), exact)));
+  std::vector<Principal_symmetry<GT>> kept;
+  for(const Principal_symmetry<GT>& s : result)
+    if(exact(s) || others > 0) {
+      if(!exact(s)) --others;
+      kept.push_back(s);
+    }
+  result = std::move(kept);
+}
+
 // Candidates of the PRST refined by ISP (walking with `walk_matcher` if given), strongest first.
+// The group that exact planes generate joins as they are accepted; beyond options.max_planes,
+// only strong candidates are refined and only exact planes accepted, so that no group is cut.
 template <typename GT, typename Matcher, typename Walk_matcher = Matcher>
 std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt, const Reflective_symmetry_transform<GT>& prst,
                                                       const std::vector<Eigen::Vector3d>& samples, const Matcher& matcher,
@@ -105,13 +215,15 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
                                                       const Walk_matcher* walk_matcher = nullptr)
 {
   Accepted_planes accepted{{}, prst.bins().theta_step(), prst.bins().offset_step(), center_of(prst.bins())};
+  Plane_group_state group{{}, 0, {{}, accepted.angle, accepted.distance, accepted.center}, 0, false};
   std::vector<Principal_symmetry<GT>> result;
   std::vector<std::array<std::size_t, 3>> candidates =
     symmetry_candidates(prst, options.symmetry_threshold, options.laplacian_threshold);
   if(candidates.size() > candidates_per_plane * options.max_planes)
     candidates.resize(candidates_per_plane * options.max_planes);
   for(const auto& bin : candidates) {
-    if(result.size() == options.max_planes) break;
+    const bool beyond_cap = result.size() >= options.max_planes;
+    if(beyond_cap && (options.max_planes_given || !worth_refining_beyond_cap(prst, bin, candidates.front(), group))) continue;
     const auto start = std::chrono::steady_clock::now();
     const std::optional<Candidate_outcome> refined = unless_cancelled([&] {
       report_progress(std::size_t(&bin - candidates.data()), candidates.size());
@@ -121,15 +233,15 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
     const Candidate_outcome& outcome = *refined;
     if(options.verbose)
       print_candidate(prst, bin, outcome, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    if(outcome.verdict != nullptr) continue;
+    if(outcome.verdict != nullptr || (beyond_cap && outcome.refined.support < group_generator_support)) continue;
     accepted.planes.push_back(outcome.coarse.plane);
     accepted.planes.push_back(outcome.refined.plane);
     const typename GT::Plane_3 plane = to_plane<GT>(outcome.refined.plane);
     result.push_back({plane, symmetry_measure(gedt, plane), outcome.refined.support});
+    if(!complete_plane_group(gedt, samples, matcher, settings, options.max_order, walk_matcher, accepted, group, result))
+      break;
   }
-  std::stable_sort(result.begin(), result.end(),
-                   [](const Principal_symmetry<GT>& a, const Principal_symmetry<GT>& b) { return a.symmetry > b.symmetry; });
-  if(result.size() > options.max_planes) result.resize(options.max_planes);
+  keep_groups_and_strongest(result, options, group.infinite);
   return result;
 }
 

@@ -26,9 +26,11 @@ namespace CGAL::Symmetry_transform::internal {
 struct Candidate_settings
 {
   std::size_t max_planes;
+  bool max_planes_given;      // a cap the user chose cuts groups; the default one does not
   double symmetry_threshold;  // t, as a fraction of the strongest maximum's symmetry measure
   double laplacian_threshold; // l, as a fraction of the strongest maximum's negative Laplacian
   bool verbose;               // print each candidate and its refinement on std::cerr
+  int max_order;              // of the rotations whose exact planes complete their group (plane_group.h)
 };
 
 struct Detection_settings
@@ -44,9 +46,11 @@ Candidate_settings candidate_settings(const NamedParameters& np)
 {
   namespace r = parameter_ranges;
   return {read_count(np, internal_np::st_max_number_of_planes, defaults::max_number_of_planes, r::max_number_of_planes),
+          !parameters::is_default_parameter<NamedParameters, internal_np::st_max_number_of_planes_t>::value,
           read_real(np, internal_np::st_symmetry_threshold, defaults::symmetry_threshold, r::symmetry_threshold),
           read_real(np, internal_np::st_laplacian_threshold, defaults::laplacian_threshold, r::laplacian_threshold),
-          parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
+          parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false),
+          int(read_count(np, internal_np::st_max_order, defaults::max_order, r::max_order))};
 }
 
 template <typename NamedParameters>

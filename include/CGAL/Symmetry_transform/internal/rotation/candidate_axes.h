@@ -16,6 +16,7 @@
 // - the lines where two planes of symmetry meet at an angle pi / k (a rotation by 2 pi / k is the
 //   product of the reflections through them), when the planes are known.
 
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis.h>
 #include <CGAL/Symmetry_transform/internal/rotation/normal_density.h>
@@ -113,11 +114,9 @@ inline std::vector<Axis_candidate> plane_pair_candidates(const std::vector<Dplan
       const Eigen::Vector3d direction = planes[i].normal.cross(planes[j].normal);
       if(direction.norm() < std::sin(tolerance)) continue;
       const double angle = std::acos(std::clamp(std::abs(planes[i].normal.dot(planes[j].normal)), 0., 1.));
-      int order = 0; // the smallest k with angle = pi k' / k for some k' (angle in (0, pi/2])
-      for(int k = 2; k <= max_order && order == 0; ++k)
-        for(int kk = 1; 2 * kk <= k && order == 0; ++kk)
-          if(std::abs(angle - CGAL_PI * double(kk) / double(k)) < tolerance) order = k;
-      if(order == 0) continue;
+      // The smallest k with angle = pi k' / k for some k' (angle in (0, pi/2]).
+      const int order = fraction_denominator(angle / CGAL_PI, max_order, tolerance / CGAL_PI);
+      if(order < 2) continue;
       // The point of the line nearest to the centre: on both planes, least squares along the line.
       Eigen::Matrix3d m;
       m << planes[i].normal.transpose(), planes[j].normal.transpose(), direction.normalized().transpose();

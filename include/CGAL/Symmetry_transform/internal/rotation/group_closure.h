@@ -14,6 +14,7 @@
 // what approximate ones generate is a candidate, refined and tested as the others (a product of
 // approximate symmetries need not be one).
 
+#include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis.h>
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
 #include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>
@@ -23,7 +24,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -62,11 +62,8 @@ inline std::optional<Axis_candidate> axis_of(const Rigid_motion& r, int max_orde
   if(angle < closure_angle_tolerance || !(direction.norm() > 0.)) return std::nullopt;
   direction.normalize();
   if(std::abs(r.translation.dot(direction)) > closure_screw_tolerance * radius) return std::nullopt;
-  int order = 0;
-  for(int n = 2; n <= max_order && order == 0; ++n)
-    for(int m = 1; 2 * m <= n && order == 0; ++m)
-      if(std::gcd(m, n) == 1 && std::abs(angle - 2. * CGAL_PI * double(m) / double(n)) < closure_angle_tolerance) order = n;
-  if(order == 0) return std::nullopt;
+  const int order = fraction_denominator(angle / (2. * CGAL_PI), max_order, closure_angle_tolerance / (2. * CGAL_PI));
+  if(order < 2) return std::nullopt;
   // The axis point p solves (I - L) p = t; the least-squares solution of least norm from the
   // centre is the axis's point nearest to it.
   const Eigen::Matrix3d fixed = Eigen::Matrix3d::Identity() - l;
