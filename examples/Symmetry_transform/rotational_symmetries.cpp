@@ -8,6 +8,8 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Symmetry_transform/point_group.h>
+#include <CGAL/Symmetry_transform/principal_symmetries.h>
 #include <CGAL/Symmetry_transform/rotational_symmetries.h>
 
 #include "bop_symmetries.h"
@@ -26,12 +28,14 @@
 
 const char* const usage = R"(usage: rotational_symmetries [MESH] [--resolution N] [--max-order K] [--seed S] [--output FILE]
 
-Finds the rotational symmetries of a mesh (axes and orders), prints them, and writes
+Finds the rotational symmetries of a mesh (axes and orders) and its mirror planes, prints the
+axes and the point group (Schoenflies symbol: D6h for a hexagonal prism), and writes
 - a PLY file: the mesh in grey with each axis drawn as a thin coloured cylinder;
 - a JSON file with the fields of the BOP benchmark's models_info.json for this object, to
   paste into its entry: "symmetries_discrete" (the rotations by 2 pi j / k about each axis of
   order k, j = 1 ... k - 1, as row-major 4x4 matrices, translation in the mesh's units) and
-  "symmetries_continuous" (the axis and a point on it, "offset", of each continuous symmetry).
+  "symmetries_continuous" (the axis and a point on it, "offset", of each continuous symmetry),
+  and "point_group", the Schoenflies symbol.
 
   MESH              an OFF, PLY, OBJ or STL file, read as a polygon soup and repaired (duplicate
                     points merged, degenerate faces removed, polygons triangulated); default:
@@ -105,8 +109,11 @@ try {
   std::cout << std::setprecision(3) << symmetries.size() << " rotational symmetries (grid " << resolution << "^3) in "
             << timer.time() << " s\n";
   print_symmetries(symmetries);
+  const ST::Point_group group = ST::point_group(ST::detect_principal_symmetries(mesh, np), symmetries);
+  std::cout << "point group " << group.name << " (" << (group.order ? std::to_string(group.order) : "infinitely many")
+            << " elements, from the exact axes and mirror planes)\n";
   write_axes(mesh, symmetries, base + ".ply");
-  examples::write_bop_json(base + ".json", symmetries);
+  examples::write_bop_json(base + ".json", symmetries, group.name);
   std::cout << "\nWrote " << base << ".ply (the mesh, each axis a coloured cylinder) and " << base
             << ".json (BOP's symmetries_discrete and symmetries_continuous)\n";
   return EXIT_SUCCESS;

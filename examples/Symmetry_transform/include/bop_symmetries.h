@@ -49,9 +49,11 @@ inline std::string json_list(const std::vector<std::string>& items)
   return "[" + text + (items.empty() ? "]" : "\n  ]");
 }
 
-// The BOP fields of the symmetries: every rotation of each discrete axis, each continuous axis.
+// The BOP fields of the symmetries: every rotation of each discrete axis, each continuous axis;
+// then the point group's name, if given (a field of ours, which BOP's readers skip).
 template <typename K>
-std::string bop_json(const std::vector<CGAL::Symmetry_transform::Rotational_symmetry<K>>& symmetries)
+std::string bop_json(const std::vector<CGAL::Symmetry_transform::Rotational_symmetry<K>>& symmetries,
+                     const std::string& point_group = "")
 {
   std::vector<std::string> discrete, continuous;
   for(const auto& s : symmetries) {
@@ -62,14 +64,15 @@ std::string bop_json(const std::vector<CGAL::Symmetry_transform::Rotational_symm
       discrete.push_back(json_matrix(CGAL::Symmetry_transform::rotation_about_axis(s.axis, 2. * CGAL_PI * j / s.order)));
   }
   return "{\n  \"symmetries_discrete\": " + json_list(discrete) + ",\n  \"symmetries_continuous\": " +
-         json_list(continuous) + "\n}\n";
+         json_list(continuous) + (point_group.empty() ? "" : ",\n  \"point_group\": \"" + point_group + "\"") + "\n}\n";
 }
 
 template <typename K>
-void write_bop_json(const std::string& file, const std::vector<CGAL::Symmetry_transform::Rotational_symmetry<K>>& symmetries)
+void write_bop_json(const std::string& file, const std::vector<CGAL::Symmetry_transform::Rotational_symmetry<K>>& symmetries,
+                    const std::string& point_group = "")
 {
   std::ofstream out(file);
-  if(!(out << bop_json(symmetries))) throw std::runtime_error("cannot write " + file);
+  if(!(out << bop_json(symmetries, point_group))) throw std::runtime_error("cannot write " + file);
 }
 
 } // namespace examples
