@@ -19,6 +19,7 @@
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_cells.h>
 
+#include "Symmetry_group_test_shapes.h"
 #include "Symmetry_transform_test_shapes.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -840,6 +841,86 @@ TEST(PrincipalSymmetries, GivenTransformAndPlaneLimitAreHonoured)
     EXPECT_TRUE(std::any_of(detected.begin(), detected.end(),
                             [&](const auto& q) { return same_planes({p}, {q}, 0.); }))
       << describe(p.plane);
+}
+
+// ------------------------------------------------------------------------------------------
+// Whole groups: the planes that exact ones generate
+// ------------------------------------------------------------------------------------------
+
+// Every mirror plane of `shape` under a random similarity, found once, to 1e-3 degree and 1e-5 of
+// the radius (the accuracy of the exact planes); every other plane found weaker than the weakest
+// of them. With the defaults (64^3), which cap the planes at 10 but do not cut a group.
+void expect_whole_group(const Group_shape& shape, unsigned seed)
+{
+  SCOPED_TRACE(shape.name);
+  CGAL::Random rng(seed);
+  const Motion m = random_motion(rng);
+  Surface_mesh mesh = shape.mesh;
+  CGAL::Polygon_mesh_processing::transform(m, mesh);
+  std::vector<Plane_3> truth;
+  for(const Plane_3& p : shape.planes) truth.push_back(moved(p, m));
+  const Center_and_radius frame = center_and_radius(mesh);
+  const Symmetries found = ST::detect_principal_symmetries(mesh, CGAL::parameters::random_seed(1));
+  double weakest = 2.;
+  std::vector<bool> is_true(found.size(), false);
+  for(const Plane_3& t : truth) {
+    std::size_t matches = 0;
+    for(std::size_t i = 0; i < found.size(); ++i)
+      if(is_near(found[i].plane, t, frame, 1e-3, 1e-5)) {
+        ++matches;
+        is_true[i] = true;
+        weakest = (std::min)(weakest, found[i].symmetry);
+      }
+    EXPECT_EQ(matches, 1u) << describe(t) << "\n" << describe(found, truth, frame);
+  }
+  for(std::size_t i = 0; i < found.size(); ++i)
+    if(!is_true[i]) EXPECT_LT(found[i].symmetry, weakest) << describe(found, truth, frame);
+}
+
+TEST(PlaneGroups, PrismsGetAllTheirMirrorPlanes)
+{
+  for(int n = 3; n <= 12; ++n) expect_whole_group(regular_prism(n), unsigned(n));
+}
+
+TEST(PlaneGroups, AntiprismsGetAllTheirMirrorPlanes)
+{
+  for(int n = 3; n <= 12; ++n) expect_whole_group(regular_antiprism(n), unsigned(100 + n));
+}
+
+TEST(PlaneGroups, PlatonicSolidsAndBoxesGetAllTheirMirrorPlanes)
+{
+  unsigned seed = 200;
+  for(const Group_shape& shape : platonic_solids()) expect_whole_group(shape, ++seed);
+  expect_whole_group(box_shape(1., 1., 1.6), ++seed);
+  expect_whole_group(box_shape(1., 0.7, 0.45), ++seed);
+}
+
+// The shapes' groups as computed from their vertices, which the tests above rely on.
+TEST(PlaneGroups, KnownGroupsHaveTheirTextbookSizes)
+{
+  const std::vector<Group_shape> solids = platonic_solids();
+  const std::size_t planes[] = {6, 9, 9, 15, 15}, axes[] = {7, 13, 13, 31, 31};
+  for(std::size_t i = 0; i < solids.size(); ++i) {
+    EXPECT_EQ(solids[i].planes.size(), planes[i]) << solids[i].name;
+    EXPECT_EQ(solids[i].axes.size(), axes[i]) << solids[i].name;
+  }
+  for(int n = 3; n <= 12; ++n) {
+    EXPECT_EQ(regular_prism(n).planes.size(), std::size_t(n + 1));
+    EXPECT_EQ(regular_antiprism(n).planes.size(), std::size_t(n));
+    EXPECT_EQ(regular_prism(n).axes.size(), std::size_t(n + 1)); // the n-fold axis and n flips
+  }
+}
+
+// A cap the user chooses cuts the group: the icosahedron's 15 planes by default, 10 with
+// max_number_of_planes(10), each of them one of the 15.
+TEST(PlaneGroups, AChosenCapCutsTheGroup)
+{
+  const Group_shape icosahedron = platonic_solids()[4];
+  const Center_and_radius frame = center_and_radius(icosahedron.mesh);
+  EXPECT_EQ(ST::detect_principal_symmetries(icosahedron.mesh).size(), 15u);
+  const Symmetries ten = ST::detect_principal_symmetries(icosahedron.mesh, CGAL::parameters::max_number_of_planes(10));
+  ASSERT_EQ(ten.size(), 10u);
+  for(const Symmetry& s : ten) EXPECT_TRUE(is_near_one_of(s.plane, icosahedron.planes, frame, 1e-3, 1e-5));
 }
 
 // ------------------------------------------------------------------------------------------

@@ -20,10 +20,13 @@
 
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
+#include <CGAL/Symmetry_transform/point_group.h>
+#include <CGAL/Symmetry_transform/principal_symmetries.h>
 #include <CGAL/Symmetry_transform/rotational_symmetries.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 
 #include "Rotational_symmetry_test_shapes.h"
+#include "Symmetry_group_test_shapes.h"
 
 #include <gtest/gtest.h>
 
@@ -502,6 +505,91 @@ TEST(RotationalSymmetries, RotationAboutAxisIsThatRotation)
 // ------------------------------------------------------------------------------------------
 // Bad input
 // ------------------------------------------------------------------------------------------
+
+// ------------------------------------------------------------------------------------------
+// Point groups
+// ------------------------------------------------------------------------------------------
+
+// The exact symmetries of a shape whose group is known, as the detections return them.
+ST::Point_group group_of_known(const Group_shape& shape)
+{
+  std::vector<ST::Principal_symmetry<K>> planes;
+  for(const Plane_3& p : shape.planes) planes.push_back({p, 1., 1.});
+  Rotations axes;
+  for(const Known_axis& a : shape.axes) axes.push_back({a.axis, a.order, 1., 1.});
+  return ST::point_group(planes, axes);
+}
+
+TEST(PointGroup, NamesTheGroupsOfTheKnownShapes)
+{
+  for(int n = 3; n <= 12; ++n) {
+    EXPECT_EQ(group_of_known(regular_prism(n)).name, "D" + std::to_string(n) + "h");
+    EXPECT_EQ(group_of_known(regular_prism(n)).order, std::size_t(4 * n));
+    EXPECT_EQ(group_of_known(regular_antiprism(n)).name, "D" + std::to_string(n) + "d");
+  }
+  const std::vector<Group_shape> solids = platonic_solids();
+  const char* names[] = {"Td", "Oh", "Oh", "Ih", "Ih"};
+  const std::size_t orders[] = {24, 48, 48, 120, 120};
+  for(std::size_t i = 0; i < solids.size(); ++i) {
+    EXPECT_EQ(group_of_known(solids[i]).name, names[i]);
+    EXPECT_EQ(group_of_known(solids[i]).order, orders[i]);
+  }
+  EXPECT_EQ(group_of_known(box_shape(1., 1., 1.6)).name, "D4h");
+  EXPECT_EQ(group_of_known(box_shape(1., 0.7, 0.45)).name, "D2h");
+  EXPECT_EQ(group_of_known(flat_polygon(5)).name, "D5h");
+  EXPECT_EQ(group_of_known(flat_rectangle()).name, "D2h");
+}
+
+// Groups of few elements and continuous ones, from symmetries written out; approximate
+// symmetries (support below min_support) do not count.
+TEST(PointGroup, NamesCyclicAndContinuousGroupsAndLeavesApproximateSymmetriesOut)
+{
+  typedef std::vector<ST::Principal_symmetry<K>> Planes;
+  const Line_3 z(CGAL::ORIGIN, Vector_3(0, 0, 1)), x(CGAL::ORIGIN, Vector_3(1, 0, 0));
+  const Plane_3 xy(0, 0, 1, 0), yz(1, 0, 0, 0), xz(0, 1, 0, 0);
+  EXPECT_EQ(ST::point_group(Planes{}, Rotations{}).name, "C1");
+  EXPECT_EQ(ST::point_group(Planes{{yz, 1., 1.}}, Rotations{}).name, "Cs");
+  EXPECT_EQ(ST::point_group(Planes{{yz, 1., 0.7}}, Rotations{}).name, "C1");
+  EXPECT_EQ(ST::point_group(Planes{}, Rotations{{z, 5, 1., 1.}}).name, "C5");
+  EXPECT_EQ(ST::point_group(Planes{{yz, 1., 1.}, {xz, 1., 1.}}, Rotations{{z, 2, 1., 1.}}).name, "C2v");
+  EXPECT_EQ(ST::point_group(Planes{{xy, 1., 1.}}, Rotations{{z, 4, 1., 1.}}).name, "C4h");
+  EXPECT_EQ(ST::point_group(Planes{}, Rotations{{z, 2, 1., 1.}, {x, 2, 1., 1.}}).name, "D2");
+  // D2d (a tetragonal disphenoid): of its three two-fold axes, the one with planes along it is the principal one.
+  const Line_3 y(CGAL::ORIGIN, Vector_3(0, 1, 0));
+  const Plane_3 diagonal(1, 1, 0, 0), other_diagonal(1, -1, 0, 0);
+  EXPECT_EQ(ST::point_group(Planes{{diagonal, 1., 1.}, {other_diagonal, 1., 1.}},
+                            Rotations{{x, 2, 1., 1.}, {y, 2, 1., 1.}, {z, 2, 1., 1.}}).name,
+            "D2d");
+  EXPECT_EQ(ST::point_group(Planes{{yz, 1., 1.}}, Rotations{{z, 0, 1., 1.}}).name, "Cinfv");
+  EXPECT_EQ(ST::point_group(Planes{{yz, 1., 1.}, {xy, 1., 1.}}, Rotations{{z, 0, 1., 1.}}).name, "Dinfh");
+  EXPECT_EQ(ST::point_group(Planes{}, Rotations{{z, 0, 1., 1.}, {x, 0, 1., 1.}}).name, "Kh");
+  EXPECT_EQ(ST::point_group(Planes{}, Rotations{{z, 0, 1., 1.}}).order, 0u);
+  EXPECT_TRUE(throws_with_message<std::invalid_argument>(
+    [&] { ST::point_group(Planes{}, Rotations{}, 1.5); }, "min_support"));
+}
+
+// The group of what the detections find, with their defaults, on shapes under random similarities.
+TEST(PointGroup, DetectedSymmetriesNameTheGroup)
+{
+  CGAL::Random rng(31);
+  const std::vector<Group_shape> solids = platonic_solids();
+  const std::vector<std::pair<Group_shape, std::string>> cases = {
+    {regular_prism(6), "D6h"}, {regular_antiprism(5), "D5d"}, {solids[0], "Td"}, {solids[1], "Oh"},
+    {solids[4], "Ih"},         {box_shape(1., 0.7, 0.45), "D2h"}};
+  for(const auto& [shape, name] : cases) {
+    Surface_mesh mesh = shape.mesh;
+    CGAL::Polygon_mesh_processing::transform(random_motion(rng), mesh);
+    EXPECT_EQ(ST::point_group(ST::detect_principal_symmetries(mesh, defaults), ST::detect_rotational_symmetries(mesh, defaults)).name,
+              name)
+      << shape.name;
+  }
+  Surface_mesh star = star_solid<Surface_mesh>(5, 0.), twisted = star_solid<Surface_mesh>(4, 30.);
+  EXPECT_EQ(ST::point_group(ST::detect_principal_symmetries(star, defaults), ST::detect_rotational_symmetries(star, defaults)).name,
+            "C5v");
+  EXPECT_EQ(ST::point_group(ST::detect_principal_symmetries(twisted, defaults),
+                            ST::detect_rotational_symmetries(twisted, defaults)).name,
+            "C4");
+}
 
 TEST(RotationalSymmetriesBadInput, EmptyNonTriangleAndNonFiniteMeshesAreRejected)
 {
