@@ -76,12 +76,10 @@ inline std::vector<Plane_3> mirror_planes_of(const std::vector<Point_3>& points)
   // The plane of a flat set, through three of its points that are not on a line.
   for(std::size_t k = 2; k < points.size(); ++k)
     if(!CGAL::collinear(points[0], points[1], points[k])) {
-      const Plane_3 plane(points[0], points[1], points[k]);
-      if(std::all_of(points.begin(), points.end(), [&](const Point_3& p) {
-           return std::abs(unit_plane(plane).a() * p.x() + unit_plane(plane).b() * p.y() + unit_plane(plane).c() * p.z() +
-                           unit_plane(plane).d()) < group_tolerance;
-         }))
-        candidates.push_back(unit_plane(plane));
+      const Plane_3 plane = unit_plane(Plane_3(points[0], points[1], points[k]));
+      if(std::all_of(points.begin(), points.end(),
+                     [&](const Point_3& p) { return std::abs(plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d()) < group_tolerance; }))
+        candidates.push_back(plane);
       break;
     }
   for(const Plane_3& c : candidates)
