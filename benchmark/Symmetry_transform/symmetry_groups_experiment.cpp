@@ -13,12 +13,20 @@
 // one) and, among them, those stronger than the weakest true plane found; the planes found twice;
 // the same for the axes, whose order must be the true one; the point group named from what was
 // found (point_group()), right on how many motions, against the one named from the true symmetries.
-// usage: symmetry_groups_experiment [--shapes prisms,antiprisms,platonic,boxes,flat] [--motions 5]
+// With --mirrored, instead: each sample mesh given and its mirror image, their centres
+// --distances radii apart, under the same motions: the rank of the mirror between them among the
+// planes found, its deviation, and how far the symmetry frame's centre lies from their midpoint.
+// usage: symmetry_groups_experiment [--shapes prisms,antiprisms,platonic,boxes,flat,apart] [--motions 5]
 //          [--tolerance 5] [--rotations 0|1] [--verbose 0|1]
+//        symmetry_groups_experiment --mirrored bull.off,cactus.off [--distances 0.5,5,50,500] [--motions 5]
 
 #include <CGAL/Symmetry_transform/point_group.h>
 #include <CGAL/Symmetry_transform/principal_symmetries.h>
 #include <CGAL/Symmetry_transform/rotational_symmetries.h>
+#include <CGAL/Symmetry_transform/symmetry_alignment.h>
+
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include "Symmetry_group_test_shapes.h"
 #include "benchmark_utilities.h"
@@ -39,11 +47,13 @@ namespace bu = benchmark_utilities;
 
 struct Options
 {
-  std::vector<std::string> families = {"prisms", "antiprisms", "platonic", "boxes", "flat"};
+  std::vector<std::string> families = {"prisms", "antiprisms", "platonic", "boxes", "flat", "apart"};
   int motions = 5;
   double tolerance = 5.; // degrees, and hundredths of the radius
   bool rotations = true;
   bool verbose = false;
+  std::vector<std::string> mirrored; // sample meshes, for the parts-apart table
+  std::vector<double> distances = {0.5, 5., 50., 500.};
 };
 
 Options parse(int argc, char** argv)
@@ -55,6 +65,11 @@ Options parse(int argc, char** argv)
     else if(option == "--tolerance") o.tolerance = std::stod(value);
     else if(option == "--rotations") o.rotations = value != "0";
     else if(option == "--verbose") o.verbose = value != "0";
+    else if(option == "--mirrored") o.mirrored = bu::split(value);
+    else if(option == "--distances") {
+      o.distances.clear();
+      for(const std::string& d : bu::split(value)) o.distances.push_back(std::stod(d));
+    }
     else throw std::invalid_argument("unknown option " + option);
   }
   return o;
@@ -72,6 +87,8 @@ std::vector<Group_shape> shapes_of(const std::string& family)
   else if(family == "flat") {
     for(int n : {3, 4, 5, 6, 8}) shapes.push_back(flat_polygon(n));
     shapes.push_back(flat_rectangle());
+  } else if(family == "apart") {
+    shapes.push_back(cubes_apart(1e4));
   } else
     throw std::invalid_argument("unknown shape family " + family);
   return shapes;
@@ -198,12 +215,64 @@ void print_row(const Group_shape& shape, const Options& o)
             << " |" << std::endl;
 }
 
+// Over the motions of two mirrored copies of `part` `distance` radii apart: the worst rank of
+// the mirror among the planes found (0: the strongest; the plane count if missing), the worst
+// deviation of the plane found for it (sine of the angle; offset over the copies' radius), and the
+// farthest the frame's centre lies from the copies' midpoint (over their radius).
+void print_mirrored_row(const std::string& name, const Surface_mesh& part, double distance, const Options& o)
+{
+  CGAL::Random rng(1);
+  const Shape<Surface_mesh> pair = mirrored_copies(part, distance);
+  const Center_and_radius copy = center_and_radius(part);
+  const Point_3 midpoint = pair.planes.front().projection(copy.center);
+  std::size_t worst_rank = 0;
+  double worst_deviation = 0., worst_center = 0.;
+  for(int i = 0; i < o.motions; ++i) {
+    const Motion m = random_motion(rng);
+    Surface_mesh mesh = pair.mesh;
+    CGAL::Polygon_mesh_processing::transform(m, mesh);
+    const double scale = std::sqrt(m.transform(Vector_3(1, 0, 0)).squared_length()), radius = scale * copy.radius;
+    const Plane_3 mirror = st_test::moved(pair.planes.front(), m);
+    const auto found = ST::detect_principal_symmetries(mesh);
+    std::size_t rank = found.size();
+    double deviation = 1.;
+    for(std::size_t r = 0; r < found.size() && rank == found.size(); ++r) {
+      const double d = (std::max)(std::sin(angle_degrees(found[r].plane.orthogonal_vector(), mirror.orthogonal_vector()) * CGAL_PI / 180.),
+                                  offset_between(unit_plane(found[r].plane), mirror, m.transform(midpoint)) / radius);
+      if(d < o.tolerance / 100.) rank = r, deviation = d;
+    }
+    worst_rank = (std::max)(worst_rank, rank);
+    worst_deviation = (std::max)(worst_deviation, deviation);
+    const Point_3 center = ST::symmetry_frame(mesh).center;
+    worst_center = (std::max)(worst_center, std::sqrt(CGAL::squared_distance(center, m.transform(midpoint))) / radius);
+  }
+  std::cout << "| " << name << " | " << distance << " | " << worst_rank << " | " << std::setprecision(2) << worst_deviation
+            << " | " << worst_center << " |" << std::endl;
+}
+
+void print_mirrored_table(const Options& o)
+{
+  std::cout << "| mesh | distance of the copies (radii) | worst rank of the mirror (0 = strongest) | its worst "
+               "deviation | frame centre from the midpoint (radii) |\n|---|---:|---:|---:|---:|\n";
+  for(const std::string& name : o.mirrored) {
+    Surface_mesh part;
+    if(!CGAL::IO::read_polygon_mesh(bu::mesh_path(name), part) || faces(part).empty())
+      throw std::invalid_argument("cannot read " + name);
+    CGAL::Polygon_mesh_processing::triangulate_faces(part);
+    for(double distance : o.distances) print_mirrored_row(name, part, distance, o);
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   try {
     const Options o = parse(argc, argv);
+    if(!o.mirrored.empty()) {
+      print_mirrored_table(o);
+      return 0;
+    }
     std::cout << "| shape | mirror planes | planes: found/true, worst angle (deg), false (above the weakest true), twice "
                  "| rotation axes | axes: found with the order/true, other order, worst angle, false (above), twice "
                  "| point group | named right |\n"

@@ -847,34 +847,47 @@ TEST(PrincipalSymmetries, GivenTransformAndPlaneLimitAreHonoured)
 // Whole groups: the planes that exact ones generate
 // ------------------------------------------------------------------------------------------
 
+// A shape under the random similarity of `seed`, with its true planes moved alike.
+struct Moved_group
+{
+  Surface_mesh mesh;
+  std::vector<Plane_3> truth;
+  Center_and_radius frame;
+};
+
+Moved_group moved_group(const Group_shape& shape, unsigned seed)
+{
+  CGAL::Random rng(seed);
+  const Motion m = random_motion(rng);
+  Moved_group g{shape.mesh, {}, {}};
+  CGAL::Polygon_mesh_processing::transform(m, g.mesh);
+  for(const Plane_3& p : shape.planes) g.truth.push_back(moved(p, m));
+  g.frame = center_and_radius(g.mesh);
+  return g;
+}
+
 // Every mirror plane of `shape` under a random similarity, found once, to 1e-3 degree and 1e-5 of
 // the radius (the accuracy of the exact planes); every other plane found weaker than the weakest
 // of them. With the defaults (64^3), which cap the planes at 10 but do not cut a group.
 void expect_whole_group(const Group_shape& shape, unsigned seed)
 {
   SCOPED_TRACE(shape.name);
-  CGAL::Random rng(seed);
-  const Motion m = random_motion(rng);
-  Surface_mesh mesh = shape.mesh;
-  CGAL::Polygon_mesh_processing::transform(m, mesh);
-  std::vector<Plane_3> truth;
-  for(const Plane_3& p : shape.planes) truth.push_back(moved(p, m));
-  const Center_and_radius frame = center_and_radius(mesh);
-  const Symmetries found = ST::detect_principal_symmetries(mesh, CGAL::parameters::random_seed(1));
+  const Moved_group g = moved_group(shape, seed);
+  const Symmetries found = ST::detect_principal_symmetries(g.mesh, CGAL::parameters::random_seed(1));
   double weakest = 2.;
   std::vector<bool> is_true(found.size(), false);
-  for(const Plane_3& t : truth) {
+  for(const Plane_3& t : g.truth) {
     std::size_t matches = 0;
     for(std::size_t i = 0; i < found.size(); ++i)
-      if(is_near(found[i].plane, t, frame, 1e-3, 1e-5)) {
+      if(is_near(found[i].plane, t, g.frame, 1e-3, 1e-5)) {
         ++matches;
         is_true[i] = true;
         weakest = (std::min)(weakest, found[i].symmetry);
       }
-    EXPECT_EQ(matches, 1u) << describe(t) << "\n" << describe(found, truth, frame);
+    EXPECT_EQ(matches, 1u) << describe(t) << "\n" << describe(found, g.truth, g.frame);
   }
   for(std::size_t i = 0; i < found.size(); ++i)
-    if(!is_true[i]) EXPECT_LT(found[i].symmetry, weakest) << describe(found, truth, frame);
+    if(!is_true[i]) EXPECT_LT(found[i].symmetry, weakest) << describe(found, g.truth, g.frame);
 }
 
 TEST(PlaneGroups, PrismsGetAllTheirMirrorPlanes)
@@ -921,6 +934,54 @@ TEST(PlaneGroups, AChosenCapCutsTheGroup)
   const Symmetries ten = ST::detect_principal_symmetries(icosahedron.mesh, CGAL::parameters::max_number_of_planes(10));
   ASSERT_EQ(ten.size(), 10u);
   for(const Symmetry& s : ten) EXPECT_TRUE(is_near_one_of(s.plane, icosahedron.planes, frame, 1e-3, 1e-5));
+}
+
+// ------------------------------------------------------------------------------------------
+// Flat shapes and parts far apart
+// ------------------------------------------------------------------------------------------
+
+// Flat regular polygons and a flat rectangle, of zero thickness: their triangles' normals are
+// all the same and leave an in-plane mirror's turn and shift to the border of the shape. Every
+// plane found is a true one, to 0.05 degree and 0.1 % of the radius, and all but one at most of
+// the true planes are found.
+TEST(FlatShapes, InPlaneMirrorsAreFoundToAFewHundredthsOfADegree)
+{
+  std::vector<Group_shape> shapes;
+  for(int n : {3, 4, 5, 6, 8}) shapes.push_back(flat_polygon(n));
+  shapes.push_back(flat_rectangle());
+  unsigned seed = 300;
+  for(const Group_shape& shape : shapes) {
+    SCOPED_TRACE(shape.name);
+    const Moved_group g = moved_group(shape, ++seed);
+    const Symmetries found = ST::detect_principal_symmetries(g.mesh, CGAL::parameters::random_seed(1));
+    for(const Symmetry& s : found) EXPECT_TRUE(is_near_one_of(s.plane, g.truth, g.frame, 0.05, 1e-3));
+    const std::size_t true_found = std::size_t(std::count_if(g.truth.begin(), g.truth.end(), [&](const Plane_3& t) {
+      return std::any_of(found.begin(), found.end(), [&](const Symmetry& s) { return bool(is_near(s.plane, t, g.frame, 0.05, 1e-3)); });
+    }));
+    EXPECT_GE(true_found + 1, g.truth.size()) << describe(found, g.truth, g.frame);
+  }
+}
+
+// Two mirrored copies of an asymmetric hull, farther apart than the grid can see them (each a
+// blob of a few voxels): the mirror between them is the strongest plane, exact, at 50 and 500
+// radii, under a random similarity.
+TEST(PartsApart, MirrorBetweenTwoCopiesIsTheStrongestPlane)
+{
+  for(double distance : {50., 500.}) {
+    SCOPED_TRACE(distance);
+    const Shape<Surface_mesh> pair = mirrored_copies(random_hull<Surface_mesh>().mesh, distance);
+    const Moved_group g = moved_group({"mirrored copies", pair.mesh, pair.planes, {}}, 400);
+    const Symmetries found = ST::detect_principal_symmetries(g.mesh);
+    ASSERT_FALSE(found.empty());
+    EXPECT_TRUE(is_near(found.front().plane, g.truth.front(), g.frame, 1e-6, 1e-9)) << describe(found, g.truth, g.frame);
+  }
+}
+
+// Two unit cubes 1e4 apart: their five common mirrors (the bisector and the four planes through
+// both centres), each exact and found once, stronger than any other plane.
+TEST(PartsApart, TwoCubesFarApartGetTheirFiveMirrors)
+{
+  expect_whole_group(cubes_apart(1e4), 500);
 }
 
 // ------------------------------------------------------------------------------------------

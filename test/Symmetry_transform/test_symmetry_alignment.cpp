@@ -15,6 +15,7 @@
 
 #include <CGAL/Symmetry_transform/symmetry_alignment.h>
 
+#include "Symmetry_group_test_shapes.h"
 #include "Symmetry_transform_test_shapes.h"
 
 #include <CGAL/centroid.h>
@@ -312,6 +313,17 @@ TEST(SymmetryFrame, FirstAxisIsTheNormalOfTheOnlyPlaneOfOnePlaneHull)
   }
   std::cout << "one-plane hull: first axis at most " << worst.degrees << " deg from the plane's normal, centre at most "
             << 100. * worst.offset << " % R from the plane\n";
+}
+
+// Parts far apart: the frame of two unit cubes 1e4 apart is centred between them (on the
+// bisector and on the line through their centres, to 1e-6 of the radius).
+TEST(SymmetryFrame, TwoCubesFarApartAreFramedBetweenThem)
+{
+  const Group_shape cubes = cubes_apart(1e4);
+  const Frame f = ST::symmetry_frame(cubes.mesh);
+  const Center_and_radius cr = center_and_radius(cubes.mesh);
+  EXPECT_LE(std::sqrt(CGAL::squared_distance(f.center, Point_3(5e3, 0., 0.))) / cr.radius, 1e-6) << describe(f);
+  EXPECT_TRUE(is_orthonormal_right_handed(f)) << describe(f);
 }
 
 // The house has two exact planes (x = 0, y = 0: the first two axes, in either order and with

@@ -13,6 +13,7 @@
 #include "Symmetry_transform_test_shapes.h"
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include <cmath>
 #include <string>
@@ -240,6 +241,41 @@ inline Group_shape flat_rectangle()
   Surface_mesh mesh;
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   return group_shape("flat rectangle", points, std::move(mesh));
+}
+
+// `part` and its mirror image across a plane of normal x, their centres `distance` apart (in
+// radii of `part`, from its centre of area); the one plane is that mirror.
+inline Shape<Surface_mesh> mirrored_copies(const Surface_mesh& part, double distance)
+{
+  const Center_and_radius frame = center_and_radius(part);
+  const Plane_3 mirror(1., 0., 0., -(frame.center.x() + 0.5 * distance * frame.radius));
+  Shape<Surface_mesh> s;
+  s.mesh = part;
+  Surface_mesh image = part;
+  for(auto v : vertices(image)) image.point(v) = reflect(image.point(v), mirror);
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(image);
+  s.mesh.join(image);
+  s.planes = {mirror};
+  return s;
+}
+
+// Two unit cubes whose centres lie `distance` apart along x: the group of a square prism (D4h),
+// its five mirrors (the bisector among them), its four-fold axis through the centres and four
+// two-fold axes in the bisector.
+inline Group_shape cubes_apart(double distance)
+{
+  const Group_shape cube = box_shape(0.5, 0.5, 0.5);
+  Surface_mesh mesh = cube.mesh, copy = cube.mesh;
+  for(auto v : vertices(copy)) copy.point(v) = copy.point(v) + Vector_3(distance, 0., 0.);
+  mesh.join(copy);
+  const Point_3 middle(0.5 * distance, 0., 0.);
+  std::vector<Known_axis> axes = {{Line_3(middle, Vector_3(1, 0, 0)), 4}};
+  for(const Vector_3& d : {Vector_3(0, 1, 0), Vector_3(0, 0, 1), Vector_3(0, 1, 1), Vector_3(0, 1, -1)})
+    axes.push_back({Line_3(middle, d), 2});
+  return {"two cubes 1e4 apart", std::move(mesh),
+          {Plane_3(1, 0, 0, -middle.x()), Plane_3(0, 1, 0, 0), Plane_3(0, 0, 1, 0), unit_plane(Plane_3(0, 1, 1, 0)),
+           unit_plane(Plane_3(0, 1, -1, 0))},
+          std::move(axes)};
 }
 
 } // namespace st_test

@@ -21,6 +21,7 @@
 #include <CGAL/Symmetry_transform/internal/detection/candidates.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
+#include <CGAL/Symmetry_transform/internal/detection/parts_apart.h>
 #include <CGAL/Symmetry_transform/internal/detection/refinement.h>
 #include <CGAL/Symmetry_transform/internal/detection/settings.h>
 #include <CGAL/Symmetry_transform/internal/detection/triangle_surface.h>
@@ -89,18 +90,55 @@ std::vector<Principal_symmetry<GT>> principal_symmetries_of_surface(const Triang
                            &surface.field);
 }
 
+template <typename GT, typename NamedParameters>
+std::vector<Principal_symmetry<GT>> symmetries_of_parts_apart(const Triangle_surface<GT>& surface,
+                                                              const std::vector<Shape_part>& parts,
+                                                              const Detection_settings& settings, const NamedParameters& np);
+
 // The detection on a surface built with settings.grid, in the input's coordinates; the transform
-// reads its own options from `np`.
+// reads its own options from `np`. Unless `whole_only`, a surface whose parts lie far apart is
+// detected at the scale of its parts (parts_apart.h).
 template <typename GT, typename NamedParameters>
 Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const Detection_settings& settings,
-                                   const NamedParameters& np)
+                                   const NamedParameters& np, bool whole_only = false)
 {
   Progress_stage stage(0., progress_shares::detection_transform);
   Reflective_symmetry_transform<GT> prst = detection_transform(surface.gedt, np);
   throw_if_cancelled(); // the transform is then zero
   stage.move_to(progress_shares::detection_transform, 1.);
-  std::vector<Principal_symmetry<GT>> symmetries = principal_symmetries_of_surface(surface, prst, settings);
+  const std::vector<Shape_part> parts =
+    whole_only ? std::vector<Shape_part>() : parts_of(surface.triangles, surface.gedt, surface.grid);
+  std::vector<Principal_symmetry<GT>> symmetries = parts_lie_apart(parts, surface.frame.radius)
+                                                     ? symmetries_of_parts_apart(surface, parts, settings, np)
+                                                     : principal_symmetries_of_surface(surface, prst, settings);
   return to_input(surface.local, Detection<GT>{std::move(symmetries), std::move(prst)});
+}
+
+// The planes of a surface whose parts lie far apart, in its local coordinates: those of its
+// largest part, detected alone, and the bisectors of alike parts, refined and measured on the
+// whole surface with the weights of the largest part's grid.
+template <typename GT, typename NamedParameters>
+std::vector<Principal_symmetry<GT>> symmetries_of_parts_apart(const Triangle_surface<GT>& surface,
+                                                              const std::vector<Shape_part>& parts,
+                                                              const Detection_settings& settings, const NamedParameters& np)
+{
+  Progress_stage stage(0., parts_apart_surface_share);
+  std::vector<Dtriangle> largest;
+  for(std::size_t t : parts.front().triangles) largest.push_back(surface.triangles[t]);
+  const Triangle_surface<GT> part(std::move(largest), settings.grid);
+  stage.move_to(parts_apart_surface_share, parts_apart_detection_share);
+  std::vector<Dplane> candidates = bisectors_of_alike_parts(parts);
+  for(const Principal_symmetry<GT>& s : detection_of_surface(part, settings, np, true).symmetries)
+    candidates.push_back(to_dplane(s.plane));
+  throw_if_cancelled(); // the part's detection keeps what it has; this one stops
+  stage.move_to(parts_apart_detection_share, 1.);
+  Isp_settings isp = isp_settings(part.grid, settings.isp_iterations, surface.gedt); // the whole band
+  isp.radius = part.frame.radius;
+  std::vector<Principal_symmetry<GT>> symmetries =
+    refined_at_part_scale(candidates, parts.front().centroid, surface.gedt,
+                          surface_samples(surface.triangles, settings.sampling), surface.matcher, isp);
+  keep_groups_and_strongest(symmetries, settings.candidates, false);
+  return symmetries;
 }
 
 // The detection on a surface built with the grid options of `np`.

@@ -10,7 +10,9 @@
 // re-fitted to the matches by weighted least squares, the weights exp(-d^2 / 2 sigma^2) of the
 // match distances d being those of the Gaussian distance transform. On a mesh the fit
 // minimises the distance of each reflected sample to the tangent plane at its match
-// (Gauss-Newton: few iterations on symmetric shapes); on a point set, with no normals, it
+// (Gauss-Newton: few iterations on symmetric shapes), or, where the normals leave the fit
+// degenerate (a flat shape), to the plane across the direction from the match to it (at the
+// border of the shape, where the distance grows in the shape's plane); on a point set, with no normals, it
 // minimises the distance to the match itself (closed form). On a mesh, ISP walks with the
 // approximate matches of a Closest_triangle_field and ends with exact searches in the AABB tree.
 
@@ -59,6 +61,37 @@ constexpr double polish_converged_step = 1e-7;
 constexpr double negligible_weight = 1e-12;
 // Samples per chunk of work: the sums and the hints' chain are the chunk's own.
 constexpr std::size_t samples_per_chunk = 64;
+// An image whose offset from its match leans off the match's normal by more than this sine is
+// matched on an edge or a corner of a triangle ...
+constexpr double edge_match_min_sine = 1e-3;
+// ... unless the offset across the normal is shorter than this many sigmas: rounding.
+constexpr double edge_match_min_offset = 1e-9;
+// A fit along the normals is degenerate when an eigenvalue of its normal matrix (its turns in
+// units of the shape's radius) is below this fraction of the largest: on a flat shape, zero up to
+// rounding (1e-30). The unknowns are not scaled to a unit diagonal: that would hide a column
+// that is zero but for rounding (the offset of an in-plane mirror, along the shape's normal).
+// Samples farther than 3e4 radii from the centre of the fit could make a fit look degenerate:
+// the fit along the gradients, the same but at edges, then takes over, harmlessly.
+constexpr double degenerate_fit_ratio = 1e-9;
+
+// The direction along which the distance of `image` to the surface grows: the normal at its
+// match inside a triangle, the direction from the match to it at an edge or a corner.
+inline Eigen::Vector3d distance_gradient(const Eigen::Vector3d& image, const Match& match, double sigma)
+{
+  const Eigen::Vector3d away = image - match.first;
+  const Eigen::Vector3d across = away - match.second.dot(away) * match.second;
+  if(across.norm() <= (std::max)(edge_match_min_sine * away.norm(), edge_match_min_offset * sigma)) return match.second;
+  return away.normalized();
+}
+
+// Whether the normal matrix `jtj` of a fit of a shape of radius `radius` leaves a direction free.
+inline bool degenerate_fit(const Eigen::Matrix3d& jtj, double radius)
+{
+  const Eigen::DiagonalMatrix<double, 3> scale(1. / radius, 1. / radius, 1.); // the turns carry a length
+  const Eigen::Matrix3d scaled = scale * jtj * scale;
+  const Eigen::Vector3d eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scaled, Eigen::EigenvaluesOnly).eigenvalues();
+  return eigenvalues[0] <= degenerate_fit_ratio * eigenvalues[2];
+}
 
 struct Isp_settings
 {
@@ -98,6 +131,11 @@ struct Isp_sums
 {
   Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();      // Gauss-Newton (mesh)
   Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+  // The same along the distance gradients (distance_gradient()), for a fit that the normals
+  // leave degenerate: on a flat shape the normals are all the same, and only the gradients at its
+  // border tell how an in-plane mirror is turned or shifted.
+  Eigen::Matrix3d edge_jtj = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d edge_jtr = Eigen::Vector3d::Zero();
   Eigen::Matrix3d moments = Eigen::Matrix3d::Zero();  // point-to-point (point set): 4 C_m - C_u
   Eigen::Vector3d midpoint_sum = Eigen::Vector3d::Zero();
   double weight = 0.;          // of the fit
@@ -105,10 +143,11 @@ struct Isp_sums
   double narrower_weight = 0.; // weights at half the width, w^4, of the same matches
 
   // Adds sample p, reflected to `image` through `plane` (tangent basis t1, t2 of its normal) and
-  // matched to `match`: to the support with weights of width `sigma`, to the fit with `fit_sigma`.
+  // matched to `match`: to the support with weights of width `sigma`, to the fit with `fit_sigma`;
+  // to the fit along the distance gradients too if `edge_gradients` (matches on triangles).
   template <bool has_normals>
   void add(const Eigen::Vector3d& p, const Eigen::Vector3d& image, const Match& match, const Dplane& plane,
-           const Eigen::Vector3d& t1, const Eigen::Vector3d& t2, double sigma, double fit_sigma)
+           const Eigen::Vector3d& t1, const Eigen::Vector3d& t2, double sigma, double fit_sigma, bool edge_gradients)
   {
     const double d2 = (image - match.first).squaredNorm();
     const double at_sigma = std::exp(-d2 / (2. * sigma * sigma));
@@ -120,14 +159,16 @@ struct Isp_sums
     narrower_weight += (w * w) * (w * w);
     const Eigen::Vector3d& n = plane.normal;
     if constexpr(has_normals) {
-      const Eigen::Vector3d& nu = match.second;
       const double height = n.dot(p) - plane.offset;
       // d(image)/d(normal) . delta = -2 ((delta . p) n + height delta); d(image)/d(offset) = 2 n
-      const Eigen::Vector3d jacobian(-2. * (t1.dot(p) * nu.dot(n) + height * nu.dot(t1)),
-                                     -2. * (t2.dot(p) * nu.dot(n) + height * nu.dot(t2)), 2. * nu.dot(n));
-      const double residual = nu.dot(image - match.first);
-      jtj += w * jacobian * jacobian.transpose();
-      jtr += w * residual * jacobian;
+      auto add_along = [&](const Eigen::Vector3d& nu, Eigen::Matrix3d& sum_jtj, Eigen::Vector3d& sum_jtr) {
+        const Eigen::Vector3d jacobian(-2. * (t1.dot(p) * nu.dot(n) + height * nu.dot(t1)),
+                                       -2. * (t2.dot(p) * nu.dot(n) + height * nu.dot(t2)), 2. * nu.dot(n));
+        sum_jtj += w * jacobian * jacobian.transpose();
+        sum_jtr += w * nu.dot(image - match.first) * jacobian;
+      };
+      add_along(match.second, jtj, jtr);
+      if(edge_gradients) add_along(distance_gradient(image, match, sigma), edge_jtj, edge_jtr);
     } else {
       const Eigen::Vector3d m = 0.5 * (p + match.first), u = p - match.first;
       moments += w * (4. * m * m.transpose() - u * u.transpose());
@@ -141,6 +182,8 @@ struct Isp_sums
     narrower_weight += o.narrower_weight;
     jtj += o.jtj;
     jtr += o.jtr;
+    edge_jtj += o.edge_jtj;
+    edge_jtr += o.edge_jtr;
     moments += o.moments;
     midpoint_sum += o.midpoint_sum;
     weight += o.weight;
@@ -148,11 +191,14 @@ struct Isp_sums
 };
 
 // The sums of the fit with weights of width `width` sigma. `hints` (one per sample) keep the
-// matches from one iteration to the next: the searches for nearby queries start there.
+// matches from one iteration to the next: the searches for nearby queries start there. Where the
+// matches are on triangles and the normals leave the fit degenerate, it follows the distance
+// gradients instead.
 template <typename Matcher>
 Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane, const Matcher& matcher,
                   const Isp_settings& settings, double width, std::vector<typename Matcher::Hint>& hints)
 {
+  constexpr bool edge_gradients = Matcher::matches_on_triangles;
   // Tangent basis of the normal: the Gauss-Newton unknowns are (rotation along t1, t2, offset).
   const Eigen::Vector3d t1 = plane.normal.unitOrthogonal(), t2 = plane.normal.cross(t1);
   // Adds sample i to the sums s; `previous` is the last sample of the same thread with a match.
@@ -164,7 +210,8 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
     if(!hints[i].valid && previous != none) hints[i] = hints[previous];
     const Match match = matcher.closest(image, hints[i]);
     previous = i;
-    s.add<Matcher::has_normals>(samples[i], image, match, plane, t1, t2, settings.sigma, width * settings.sigma);
+    s.add<Matcher::has_normals>(samples[i], image, match, plane, t1, t2, settings.sigma, width * settings.sigma,
+                                edge_gradients);
   };
   // The samples follow a Hilbert curve: contiguous slices would be regions of the shape, some
   // mapped far from the surface (costly searches) and some onto it; the threads take the chunks
@@ -179,6 +226,10 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
   });
   Isp_sums total;
   for(const Isp_sums& s : partial) total.add(s);
+  if(edge_gradients && degenerate_fit(total.jtj, settings.radius)) {
+    total.jtj = total.edge_jtj;
+    total.jtr = total.edge_jtr;
+  }
   return total;
 }
 
@@ -372,6 +423,7 @@ class Local_matcher
 {
 public:
   static constexpr bool has_normals = Matcher::has_normals;
+  static constexpr bool matches_on_triangles = Matcher::matches_on_triangles;
   typedef typename Matcher::Hint Hint;
 
   Local_matcher(const Matcher& matcher, const Eigen::Vector3d& center) : matcher_(matcher), center_(center) {}

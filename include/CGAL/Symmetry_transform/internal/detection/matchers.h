@@ -46,6 +46,7 @@ class Triangle_matcher
 {
 public:
   static constexpr bool has_normals = true;
+  static constexpr bool matches_on_triangles = true;
 
   // A previous match, on the surface and with its triangle: the search for a nearby query starts there.
   struct Hint
@@ -109,6 +110,7 @@ class Closest_triangle_field
 {
 public:
   static constexpr bool has_normals = true;
+  static constexpr bool matches_on_triangles = true;
   typedef Triangle_matcher::Hint Hint;
 
   // `closest_triangles`: per voxel (index (k n + j) n + i) the triangle closest to its centre,
@@ -190,6 +192,7 @@ class Point_set_matcher
 {
 public:
   static constexpr bool has_normals = with_normals;
+  static constexpr bool matches_on_triangles = false;
 
   // Nothing to start from: a Kd-tree search is cheap.
   struct Hint
