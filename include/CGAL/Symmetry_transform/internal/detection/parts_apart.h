@@ -98,6 +98,7 @@ std::vector<Shape_part> parts_of(const std::vector<Dtriangle>& triangles, const 
   if(grid.cutoff() < std::sqrt(3.) * grid.voxel_size()) return {};
   const std::vector<int> region = band_regions(gedt);
   const int count = region.empty() ? 0 : *std::max_element(region.begin(), region.end());
+  if(count < 2) return {}; // one region: nothing lies apart, and no triangle need be read
   std::vector<Shape_part> parts(std::size_t(count) + 1); // parts[0]: triangles off the band (none)
   const long n = long(gedt.resolution());
   for(std::size_t t = 0; t < triangles.size(); ++t) {
