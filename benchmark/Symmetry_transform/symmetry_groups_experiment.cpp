@@ -3,7 +3,8 @@
 // Author(s): The CGAL Symmetry_transform developers
 //
 // Whole symmetry groups: shapes built in code whose mirror planes and rotation axes are known
-// (regular prisms and antiprisms, Platonic solids, boxes, flat polygons and a flat rectangle),
+// (regular prisms and antiprisms, Platonic solids, boxes, flat polygons and a flat rectangle, two
+// cubes far apart, a cylinder and a cone),
 // each under --motions seeded random similarities, against detect_principal_symmetries() and
 // detect_rotational_symmetries() with their defaults.
 //
@@ -11,12 +12,14 @@
 // degrees and --tolerance/100 of the radius of a true one) out of those that exist; the largest
 // angle between a true plane and the one found for it (degrees); the false planes (near no true
 // one) and, among them, those stronger than the weakest true plane found; the planes found twice;
-// the same for the axes, whose order must be the true one; the point group named from what was
+// the same for the axes, whose order must be the true one (on a surface of revolution, the flips
+// about its continuous axis count as neither); the pencils of mirrors (every plane through a
+// line) found as such, and the largest angle of their lines; the point group named from what was
 // found (point_group()), right on how many motions, against the one named from the true symmetries.
 // With --mirrored, instead: each sample mesh given and its mirror image, their centres
 // --distances radii apart, under the same motions: the rank of the mirror between them among the
 // planes found, its deviation, and how far the symmetry frame's centre lies from their midpoint.
-// usage: symmetry_groups_experiment [--shapes prisms,antiprisms,platonic,boxes,flat,apart] [--motions 5]
+// usage: symmetry_groups_experiment [--shapes prisms,antiprisms,platonic,boxes,flat,apart,revolution] [--motions 5]
 //          [--tolerance 5] [--rotations 0|1] [--verbose 0|1]
 //        symmetry_groups_experiment --mirrored bull.off,cactus.off [--distances 0.5,5,50,500] [--motions 5]
 
@@ -47,7 +50,7 @@ namespace bu = benchmark_utilities;
 
 struct Options
 {
-  std::vector<std::string> families = {"prisms", "antiprisms", "platonic", "boxes", "flat", "apart"};
+  std::vector<std::string> families = {"prisms", "antiprisms", "platonic", "boxes", "flat", "apart", "revolution"};
   int motions = 5;
   double tolerance = 5.; // degrees, and hundredths of the radius
   bool rotations = true;
@@ -89,6 +92,8 @@ std::vector<Group_shape> shapes_of(const std::string& family)
     shapes.push_back(flat_rectangle());
   } else if(family == "apart") {
     shapes.push_back(cubes_apart(1e4));
+  } else if(family == "revolution") {
+    shapes = {cylinder(), cone()};
   } else
     throw std::invalid_argument("unknown shape family " + family);
   return shapes;
@@ -148,12 +153,49 @@ void tally_planes(const std::vector<ST::Principal_symmetry<K>>& found, const std
   auto degrees = [](const ST::Principal_symmetry<K>& f, const Plane_3& p) {
     return angle_degrees(f.plane.orthogonal_vector(), p.orthogonal_vector());
   };
-  tally(found, truth, near, degrees, [](const auto&, const auto&) { return true; }, t);
+  std::vector<ST::Principal_symmetry<K>> single;
+  for(const auto& f : found)
+    if(f.family == ST::Mirror_family::ONE_PLANE) single.push_back(f);
+  tally(single, truth, near, degrees, [](const auto&, const auto&) { return true; }, t);
 }
 
-void tally_axes(const std::vector<ST::Rotational_symmetry<K>>& found, const std::vector<Known_axis>& truth,
-                double radius, double tolerance, Tally& t)
+// The pencils of mirrors found as such (EVERY_PLANE_THROUGH_AXIS), against the true ones.
+void tally_pencils(const std::vector<ST::Principal_symmetry<K>>& found, const std::vector<Line_3>& truth, double radius,
+                   double tolerance, Tally& t)
 {
+  std::vector<ST::Principal_symmetry<K>> pencils;
+  for(const auto& f : found)
+    if(f.family != ST::Mirror_family::ONE_PLANE) pencils.push_back(f);
+  auto near = [&](const ST::Principal_symmetry<K>& f, const Line_3& line) {
+    return f.family == ST::Mirror_family::EVERY_PLANE_THROUGH_AXIS &&
+           angle_degrees(f.axis.to_vector(), line.to_vector()) < tolerance &&
+           std::sqrt(CGAL::squared_distance(line, f.axis.point())) < tolerance / 100. * radius;
+  };
+  auto degrees = [](const ST::Principal_symmetry<K>& f, const Line_3& line) {
+    return angle_degrees(f.axis.to_vector(), line.to_vector());
+  };
+  tally(pencils, truth, near, degrees, [](const auto&, const auto&) { return true; }, t);
+}
+
+// A flip about a continuous axis of `truth` that has a mirror across it (a cylinder's): one of
+// infinitely many, which the detection reports one of.
+bool flip_of_continuous(const ST::Rotational_symmetry<K>& f, const std::vector<Known_axis>& truth,
+                        const std::vector<Plane_3>& planes, double radius, double tolerance)
+{
+  return f.order == 2 && std::any_of(truth.begin(), truth.end(), [&](const Known_axis& a) {
+    const Vector_3 d = a.axis.to_vector();
+    return a.order == 0 && std::abs(90. - angle_degrees(f.axis.to_vector(), d)) < tolerance &&
+           std::sqrt(CGAL::squared_distance(a.axis, f.axis.point())) < tolerance / 100. * radius &&
+           std::any_of(planes.begin(), planes.end(), [&](const Plane_3& p) { return angle_degrees(p.orthogonal_vector(), d) < tolerance; });
+  });
+}
+
+void tally_axes(const std::vector<ST::Rotational_symmetry<K>>& all_found, const std::vector<Known_axis>& truth,
+                const std::vector<Plane_3>& planes, double radius, double tolerance, Tally& t)
+{
+  std::vector<ST::Rotational_symmetry<K>> found;
+  for(const auto& f : all_found)
+    if(!flip_of_continuous(f, truth, planes, radius, tolerance)) found.push_back(f);
   auto near = [&](const ST::Rotational_symmetry<K>& f, const Known_axis& a) {
     const Vector_3 d = a.axis.to_vector();
     return angle_degrees(f.axis.to_vector(), d) < tolerance &&
@@ -163,6 +205,18 @@ void tally_axes(const std::vector<ST::Rotational_symmetry<K>>& found, const std:
     return angle_degrees(f.axis.to_vector(), a.axis.to_vector());
   };
   tally(found, truth, near, degrees, [](const auto& f, const Known_axis& a) { return f.order == a.order; }, t);
+}
+
+Line_3 moved(const Line_3& line, const Motion& m)
+{
+  return Line_3(m.transform(line.point()), m.transform(line.to_vector()));
+}
+
+// A plane through `line`, standing for every such plane.
+ST::Principal_symmetry<K> pencil_of(const Line_3& line)
+{
+  const Plane_3 plane(line.point(), line.point() + line.to_vector(), line.point() + line.perpendicular_plane(line.point()).base1());
+  return {plane, 1., 1., ST::Mirror_family::EVERY_PLANE_THROUGH_AXIS, line};
 }
 
 std::vector<Known_axis> moved(const std::vector<Known_axis>& axes, const Motion& m)
@@ -184,11 +238,12 @@ std::string cell(const Tally& t, bool with_order)
 void print_row(const Group_shape& shape, const Options& o)
 {
   CGAL::Random rng(1);
-  Tally planes, axes;
+  Tally planes, axes, pencils;
   int right_groups = 0;
   std::vector<ST::Principal_symmetry<K>> true_planes_found;
   std::vector<ST::Rotational_symmetry<K>> true_axes_found;
   for(const Plane_3& p : shape.planes) true_planes_found.push_back({p, 1., 1.});
+  for(const Line_3& line : shape.pencils) true_planes_found.push_back(pencil_of(line));
   for(const Known_axis& a : shape.axes) true_axes_found.push_back({a.axis, a.order, 1., 1.});
   const std::string true_group = ST::point_group(true_planes_found, true_axes_found).name;
   const double shape_radius = set_radius(std::vector<Point_3>(shape.mesh.points().begin(), shape.mesh.points().end()));
@@ -202,15 +257,23 @@ void print_row(const Group_shape& shape, const Options& o)
     for(const Plane_3& p : shape.planes) true_planes.push_back(st_test::moved(p, m));
     const auto found = ST::detect_principal_symmetries(mesh, CGAL::parameters::verbose(o.verbose));
     tally_planes(found, true_planes, center, radius, o.tolerance, planes);
+    std::vector<Line_3> true_pencils;
+    for(const Line_3& line : shape.pencils) true_pencils.push_back(moved(line, m));
+    tally_pencils(found, true_pencils, radius, o.tolerance, pencils);
     if(o.verbose)
       for(const auto& f : found) std::cerr << shape.name << " motion " << i << ": plane M " << f.symmetry << " support " << f.support << "\n";
     if(!o.rotations) continue;
-    const auto found_axes = ST::detect_rotational_symmetries(mesh);
-    tally_axes(found_axes, moved(shape.axes, m), radius, o.tolerance, axes);
+    const auto found_axes = ST::detect_rotational_symmetries(mesh, CGAL::parameters::verbose(o.verbose));
+    if(o.verbose)
+      for(const auto& f : found_axes)
+        std::cerr << shape.name << " motion " << i << ": axis " << f.axis.to_vector() << " order " << f.order << " symmetry "
+                  << f.symmetry << "\n";
+    tally_axes(found_axes, moved(shape.axes, m), true_planes, radius, o.tolerance, axes);
     right_groups += ST::point_group(found, found_axes).name == true_group ? 1 : 0;
   }
   std::cout << "| " << shape.name << " | " << shape.planes.size() << " | " << cell(planes, false) << " | "
-            << shape.axes.size() << " | " << (o.rotations ? cell(axes, true) : std::string("—")) << " | " << true_group
+            << shape.axes.size() << " | " << (o.rotations ? cell(axes, true) : std::string("—")) << " | "
+            << pencils.found << "/" << pencils.truth << ", " << std::setprecision(2) << pencils.worst_degrees << " | " << true_group
             << " | " << (o.rotations ? std::to_string(right_groups) + "/" + std::to_string(o.motions) : std::string("—"))
             << " |" << std::endl;
 }
@@ -275,8 +338,8 @@ int main(int argc, char** argv)
     }
     std::cout << "| shape | mirror planes | planes: found/true, worst angle (deg), false (above the weakest true), twice "
                  "| rotation axes | axes: found with the order/true, other order, worst angle, false (above), twice "
-                 "| point group | named right |\n"
-                 "|---|---:|---|---:|---|---|---:|\n";
+                 "| pencils of mirrors: found/true, worst angle | point group | named right |\n"
+                 "|---|---:|---|---:|---|---|---|---:|\n";
     for(const std::string& family : o.families)
       for(const Group_shape& shape : shapes_of(family)) print_row(shape, o);
   } catch(const std::exception& e) {

@@ -68,6 +68,13 @@ void print_plane(std::size_t rank, const ST::Principal_symmetry<K>& s, const exa
             << n.y() << ' ' << std::setw(6) << n.z() << ") " << std::setw(8) << s.plane.d() << std::setw(9)
             << -(n * (extent.center - CGAL::ORIGIN) + s.plane.d()) / extent.radius << std::setw(10) << s.symmetry
             << std::setw(9) << support << std::setw(10) << std::setprecision(5) << sde << "\n";
+  // A surface of revolution or a sphere has infinitely many mirrors: one plane stands for them.
+  const K::Point_3 p = s.axis.point();
+  if(s.family == ST::Mirror_family::EVERY_PLANE_THROUGH_AXIS)
+    std::cout << std::setprecision(3) << "        and every plane through the axis (" << p << ") + t ("
+              << s.axis.to_vector() << ")\n";
+  else if(s.family == ST::Mirror_family::EVERY_PLANE_THROUGH_POINT)
+    std::cout << std::setprecision(3) << "        and every plane through (" << p << ")\n";
 }
 
 // Per plane: prints it with its support (thesis, Figure 3.7) and its SDE, and writes

@@ -887,7 +887,9 @@ void expect_whole_group(const Group_shape& shape, unsigned seed)
     EXPECT_EQ(matches, 1u) << describe(t) << "\n" << describe(found, g.truth, g.frame);
   }
   for(std::size_t i = 0; i < found.size(); ++i)
-    if(!is_true[i]) EXPECT_LT(found[i].symmetry, weakest) << describe(found, g.truth, g.frame);
+    if(!is_true[i]) {
+      EXPECT_LT(found[i].symmetry, weakest) << describe(found, g.truth, g.frame);
+    }
 }
 
 TEST(PlaneGroups, PrismsGetAllTheirMirrorPlanes)
@@ -942,23 +944,55 @@ TEST(PlaneGroups, AChosenCapCutsTheGroup)
 
 // Flat regular polygons and a flat rectangle, of zero thickness: their triangles' normals are
 // all the same and leave an in-plane mirror's turn and shift to the border of the shape. Every
-// plane found is a true one, to 0.05 degree and 0.1 % of the radius, and all but one at most of
-// the true planes are found.
-TEST(FlatShapes, InPlaneMirrorsAreFoundToAFewHundredthsOfADegree)
+// mirror plane is found once, as exact as those of solids (1e-3 degree and 1e-5 of the radius),
+// nothing else.
+TEST(FlatShapes, EveryMirrorIsFoundAsExactlyAsThoseOfSolids)
 {
   std::vector<Group_shape> shapes;
   for(int n : {3, 4, 5, 6, 8}) shapes.push_back(flat_polygon(n));
   shapes.push_back(flat_rectangle());
   unsigned seed = 300;
   for(const Group_shape& shape : shapes) {
+    expect_whole_group(shape, ++seed);
+    const Moved_group g = moved_group(shape, seed);
+    for(const Symmetry& s : ST::detect_principal_symmetries(g.mesh, CGAL::parameters::random_seed(1)))
+      EXPECT_TRUE(is_near_one_of(s.plane, g.truth, g.frame, 1e-3, 1e-5)) << shape.name;
+  }
+}
+
+// A cylinder and a cone: their mirrors through the axis are returned once, as the pencil of
+// planes through the axis, the line to 1e-3 degree and 1e-5 of the radius, and no other plane
+// found contains the axis; the cylinder's cross-section is found, exact.
+TEST(RevolutionShapes, PencilOfMirrorsIsReportedOnceWithItsAxis)
+{
+  unsigned seed = 600;
+  for(const Group_shape& shape : {cylinder(), cone()}) {
     SCOPED_TRACE(shape.name);
-    const Moved_group g = moved_group(shape, ++seed);
-    const Symmetries found = ST::detect_principal_symmetries(g.mesh, CGAL::parameters::random_seed(1));
-    for(const Symmetry& s : found) EXPECT_TRUE(is_near_one_of(s.plane, g.truth, g.frame, 0.05, 1e-3));
-    const std::size_t true_found = std::size_t(std::count_if(g.truth.begin(), g.truth.end(), [&](const Plane_3& t) {
-      return std::any_of(found.begin(), found.end(), [&](const Symmetry& s) { return bool(is_near(s.plane, t, g.frame, 0.05, 1e-3)); });
-    }));
-    EXPECT_GE(true_found + 1, g.truth.size()) << describe(found, g.truth, g.frame);
+    CGAL::Random rng(++seed);
+    const Motion m = random_motion(rng);
+    Surface_mesh mesh = shape.mesh;
+    CGAL::Polygon_mesh_processing::transform(m, mesh);
+    const Center_and_radius frame = center_and_radius(mesh);
+    const Line_3 axis(m.transform(shape.pencils.front().point()), m.transform(shape.pencils.front().to_vector()));
+    const Symmetries found = ST::detect_principal_symmetries(mesh, CGAL::parameters::random_seed(1));
+    std::size_t pencils = 0;
+    for(const Symmetry& s : found) {
+      const Vector_3 n = unit_normal(s.plane), d = axis.to_vector() / std::sqrt(axis.to_vector().squared_length());
+      const bool contains_axis =
+        std::abs(n * d) < 1e-3 && std::sqrt(CGAL::squared_distance(s.plane, axis.point())) < 1e-3 * frame.radius;
+      if(s.family != ST::Mirror_family::EVERY_PLANE_THROUGH_AXIS) {
+        EXPECT_FALSE(contains_axis) << "a member of the pencil listed alone\n" << describe(found, {}, frame);
+        continue;
+      }
+      ++pencils;
+      EXPECT_TRUE(contains_axis);
+      const Vector_3 u = s.axis.to_vector() / std::sqrt(s.axis.to_vector().squared_length());
+      EXPECT_LT(std::sqrt(CGAL::cross_product(u, d).squared_length()), std::sin(1e-3 * CGAL_PI / 180.));
+      EXPECT_LT(std::sqrt(CGAL::squared_distance(axis, s.axis.point())), 1e-5 * frame.radius);
+    }
+    EXPECT_EQ(pencils, 1u) << describe(found, {}, frame);
+    for(const Plane_3& p : shape.planes)
+      EXPECT_TRUE(is_among(moved(p, m), found, found.size(), frame, 1e-3, 1e-5)) << describe(found, {}, frame);
   }
 }
 
@@ -970,7 +1004,7 @@ TEST(PartsApart, MirrorBetweenTwoCopiesIsTheStrongestPlane)
   for(double distance : {50., 500.}) {
     SCOPED_TRACE(distance);
     const Shape<Surface_mesh> pair = mirrored_copies(random_hull<Surface_mesh>().mesh, distance);
-    const Moved_group g = moved_group({"mirrored copies", pair.mesh, pair.planes, {}}, 400);
+    const Moved_group g = moved_group({"mirrored copies", pair.mesh, pair.planes, {}, {}}, 400);
     const Symmetries found = ST::detect_principal_symmetries(g.mesh);
     ASSERT_FALSE(found.empty());
     EXPECT_TRUE(is_near(found.front().plane, g.truth.front(), g.frame, 1e-6, 1e-9)) << describe(found, g.truth, g.frame);

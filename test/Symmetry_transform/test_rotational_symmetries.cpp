@@ -591,6 +591,65 @@ TEST(PointGroup, DetectedSymmetriesNameTheGroup)
             "C4");
 }
 
+// Every rotation axis of `shape` under a random similarity found once, with its order, to 1e-3
+// degree and 1e-5 of the radius; any other axis found weaker than the weakest of them, but for the
+// flip that stands for those about a continuous axis across which the shape has a mirror (a
+// cylinder's); the point group named `group`.
+void expect_whole_rotation_group(const Group_shape& shape, const std::string& group, unsigned seed)
+{
+  SCOPED_TRACE(shape.name);
+  CGAL::Random rng(seed);
+  const Motion m = random_motion(rng);
+  Surface_mesh mesh = shape.mesh;
+  CGAL::Polygon_mesh_processing::transform(m, mesh);
+  const Center_and_radius frame = center_and_radius(mesh);
+  const Rotations found = ST::detect_rotational_symmetries(mesh, defaults);
+  double weakest = 2.;
+  std::vector<bool> is_true(found.size(), false);
+  for(const Known_axis& a : shape.axes) {
+    const Line_3 truth = moved(a.axis, m);
+    std::size_t matches = 0;
+    for(std::size_t i = 0; i < found.size(); ++i) {
+      const Axis_error e = axis_error(found[i].axis, truth, frame);
+      if(e.degrees > 1e-3 || e.offset > 1e-5) continue;
+      ++matches;
+      is_true[i] = true;
+      weakest = (std::min)(weakest, found[i].symmetry);
+      EXPECT_EQ(found[i].order, a.order) << describe(found, frame);
+    }
+    EXPECT_EQ(matches, 1u) << describe(found, frame, {truth});
+  }
+  for(std::size_t i = 0; i < found.size(); ++i) {
+    const bool flip = found[i].order == 2 && shape.axes.size() == 1 && shape.axes.front().order == 0 && !shape.planes.empty();
+    if(!is_true[i] && !flip) {
+      EXPECT_LT(found[i].symmetry, weakest) << describe(found, frame);
+    }
+  }
+  EXPECT_EQ(ST::point_group(ST::detect_principal_symmetries(mesh, defaults), found).name, group);
+}
+
+// Flat polygons: the supports of their area hold for any turn (a pentagon keeps 0.89 of it
+// turned by a tenth of a turn); their orders are those of their borders, their flips exact.
+TEST(RotationGroups, FlatPolygonsGetTheirAxesWithTheirOrders)
+{
+  for(int n : {3, 4, 5, 6, 8}) expect_whole_rotation_group(flat_polygon(n), "D" + std::to_string(n) + "h", unsigned(700 + n));
+  expect_whole_rotation_group(flat_rectangle(), "D2h", 710);
+}
+
+// Two cubes 1e4 apart, blobs on the grid: the four-fold axis through both and the four flips
+// between them, exact (no continuous axis), the group D4h.
+TEST(RotationGroups, TwoCubesFarApartGetTheirFiveAxes)
+{
+  expect_whole_rotation_group(cubes_apart(1e4), "D4h", 720);
+}
+
+// A cylinder and a cone: the continuous axis, and the cylinder's flips stood for by one.
+TEST(RotationGroups, CylinderAndConeGetTheirContinuousAxis)
+{
+  expect_whole_rotation_group(cylinder(), "Dinfh", 730);
+  expect_whole_rotation_group(cone(), "Cinfv", 731);
+}
+
 TEST(RotationalSymmetriesBadInput, EmptyNonTriangleAndNonFiniteMeshesAreRejected)
 {
   const Surface_mesh empty;

@@ -35,8 +35,9 @@ struct Group_shape
 {
   std::string name;
   Surface_mesh mesh;
-  std::vector<Plane_3> planes;
-  std::vector<Known_axis> axes;
+  std::vector<Plane_3> planes;   // the mirror planes that stand alone
+  std::vector<Known_axis> axes;  // order 0: a continuous axis
+  std::vector<Line_3> pencils;   // lines every plane through which is a mirror (a surface of revolution)
 };
 
 // Relative to the size of the vertex set: the points built here are exact to about 1e-15.
@@ -131,7 +132,7 @@ inline std::vector<Known_axis> rotation_axes_of(const std::vector<Point_3>& poin
 
 inline Group_shape group_shape(const std::string& name, const std::vector<Point_3>& points, Surface_mesh mesh)
 {
-  Group_shape s{name, std::move(mesh), mirror_planes_of(points), {}};
+  Group_shape s{name, std::move(mesh), mirror_planes_of(points), {}, {}};
   s.axes = rotation_axes_of(points, s.mesh);
   return s;
 }
@@ -243,6 +244,54 @@ inline Group_shape flat_rectangle()
   return group_shape("flat rectangle", points, std::move(mesh));
 }
 
+// Segments about the z axis of the surfaces of revolution below: a 128-fold symmetry, which the
+// rotation detection cannot tell from a continuous one.
+constexpr int revolution_segments = 128;
+
+// A closed surface of revolution about the z axis: the vertices `profile` (r, z), from a pole
+// (r = 0) to a pole, turned in revolution_segments steps.
+inline Surface_mesh revolution(const std::vector<std::array<double, 2>>& profile)
+{
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t>> rings;
+  for(const auto& [r, z] : profile) {
+    rings.emplace_back();
+    const int steps = r > 0. ? revolution_segments : 1;
+    for(int i = 0; i < steps; ++i) {
+      rings.back().push_back(points.size());
+      const double a = 2. * CGAL_PI * double(i) / double(revolution_segments);
+      points.emplace_back(r * std::cos(a), r * std::sin(a), z);
+    }
+  }
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for(std::size_t k = 0; k + 1 < rings.size(); ++k)
+    for(int i = 0; i < revolution_segments; ++i) {
+      const std::vector<std::size_t>&p = rings[k], &q = rings[k + 1];
+      auto at = [](const std::vector<std::size_t>& ring, int j) { return ring[std::size_t(j) % ring.size()]; };
+      if(p.size() > 1) triangles.push_back({at(p, i), at(p, i + 1), at(q, i)});
+      if(q.size() > 1) triangles.push_back({at(p, i + 1), at(q, i + 1), at(q, i)});
+    }
+  Surface_mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  return mesh;
+}
+
+// A closed cylinder of radius 1 and height 1.6 about the z axis: its pencil of mirrors through
+// the axis, its cross-section plane z = 0, its continuous axis (group D_inf_h).
+inline Group_shape cylinder()
+{
+  const Line_3 z(CGAL::ORIGIN, Vector_3(0, 0, 1));
+  return {"cylinder", revolution({{0., -0.8}, {1., -0.8}, {1., 0.8}, {0., 0.8}}), {Plane_3(0, 0, 1, 0)}, {{z, 0}}, {z}};
+}
+
+// A closed cone of base radius 1 and height 1.5 about the z axis: its pencil of mirrors and its
+// continuous axis (C_inf_v).
+inline Group_shape cone()
+{
+  const Line_3 z(CGAL::ORIGIN, Vector_3(0, 0, 1));
+  return {"cone", revolution({{0., -0.5}, {1., -0.5}, {0., 1.}}), {}, {{z, 0}}, {z}};
+}
+
 // `part` and its mirror image across a plane of normal x, their centres `distance` apart (in
 // radii of `part`, from its centre of area); the one plane is that mirror.
 inline Shape<Surface_mesh> mirrored_copies(const Surface_mesh& part, double distance)
@@ -275,7 +324,8 @@ inline Group_shape cubes_apart(double distance)
   return {"two cubes 1e4 apart", std::move(mesh),
           {Plane_3(1, 0, 0, -middle.x()), Plane_3(0, 1, 0, 0), Plane_3(0, 0, 1, 0), unit_plane(Plane_3(0, 1, 1, 0)),
            unit_plane(Plane_3(0, 1, -1, 0))},
-          std::move(axes)};
+          std::move(axes),
+          {}};
 }
 
 } // namespace st_test

@@ -157,12 +157,26 @@ Dplane strongest_plane_perpendicular_to(const Reflective_symmetry_transform<GT>&
   return best.first;
 }
 
-// The planes of the principal symmetries, strongest first.
+// The planes of the principal symmetries, strongest first. A family of mirrors stands for its
+// planes: after its own, the members across it that the frame needs, through its axis (one for a
+// pencil, two for a sphere's), so that the frame's centre lies on the axis.
 template <typename GT>
 std::vector<Dplane> planes_of(const std::vector<Principal_symmetry<GT>>& symmetries)
 {
   std::vector<Dplane> planes;
-  for(const Principal_symmetry<GT>& symmetry : symmetries) planes.push_back(to_dplane(symmetry.plane));
+  for(const Principal_symmetry<GT>& symmetry : symmetries) {
+    const Dplane plane = to_dplane(symmetry.plane);
+    planes.push_back(plane);
+    if(symmetry.family == Mirror_family::ONE_PLANE) continue;
+    const Eigen::Vector3d point = to_eigen(to_dpoint(symmetry.axis.point()));
+    const Eigen::Vector3d along = to_eigen(to_dpoint(symmetry.axis.point() + symmetry.axis.to_vector())) - point;
+    const Eigen::Vector3d across = plane.normal.cross(along).normalized();
+    planes.push_back({across, across.dot(point)});
+    if(symmetry.family == Mirror_family::EVERY_PLANE_THROUGH_POINT) {
+      const Eigen::Vector3d third = plane.normal.cross(across);
+      planes.push_back({third, third.dot(point)});
+    }
+  }
   return planes;
 }
 

@@ -18,6 +18,7 @@
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
+#include <CGAL/Symmetry_transform/internal/detection/border_curve.h>
 #include <CGAL/Symmetry_transform/internal/detection/candidates.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
@@ -29,7 +30,9 @@
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
 
+#include <algorithm>
 #include <iterator>
+#include <optional>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
@@ -66,7 +69,11 @@ Reflective_symmetry_transform<GT> shifted(Reflective_symmetry_transform<GT> prst
 template <typename GT>
 std::vector<Principal_symmetry<GT>> to_input(const Local_coordinates& local, std::vector<Principal_symmetry<GT>> symmetries)
 {
-  for(Principal_symmetry<GT>& s : symmetries) s.plane = to_plane<GT>(local.to_input(to_dplane(s.plane)));
+  for(Principal_symmetry<GT>& s : symmetries) {
+    s.plane = to_plane<GT>(local.to_input(to_dplane(s.plane)));
+    if(s.family != Mirror_family::ONE_PLANE)
+      s.axis = typename GT::Line_3(to_point<GT>(local.to_input(to_eigen(to_dpoint(s.axis.point())))), s.axis.to_vector());
+  }
   return symmetries;
 }
 
@@ -79,15 +86,17 @@ Detection<GT> to_input(const Local_coordinates& local, Detection<GT> detection)
 
 // The candidates of `prst`, the transform of `surface` (both in the surface's local coordinates,
 // as the planes returned), refined: ISP walks with the surface's closest-triangle field and ends
-// with exact searches.
+// with exact searches, then, on a flat surface, with the fit of in-plane mirrors to its border.
 template <typename GT>
 std::vector<Principal_symmetry<GT>> principal_symmetries_of_surface(const Triangle_surface<GT>& surface,
                                                                    const Reflective_symmetry_transform<GT>& prst,
                                                                    const Detection_settings& settings)
 {
-  return refine_candidates(surface.gedt, prst, surface_samples(surface.triangles, settings.sampling), surface.matcher,
-                           isp_settings(surface.grid, settings.isp_iterations, surface.gedt), settings.candidates,
-                           &surface.field);
+  Isp_settings isp = isp_settings(surface.grid, settings.isp_iterations, surface.gedt);
+  const std::optional<Border_curve> border = border_curve(surface.triangles, surface.frame.radius, isp.sigma);
+  isp.border = border ? &*border : nullptr;
+  return refine_candidates(surface.gedt, prst, surface_samples(surface.triangles, settings.sampling), surface.matcher, isp,
+                           settings.candidates, &surface.field);
 }
 
 template <typename GT, typename NamedParameters>
@@ -114,31 +123,57 @@ Detection<GT> detection_of_surface(const Triangle_surface<GT>& surface, const De
   return to_input(surface.local, Detection<GT>{std::move(symmetries), std::move(prst)});
 }
 
+// The triangles of the largest of `parts` of `surface`.
+template <typename GT>
+std::vector<Dtriangle> largest_part(const Triangle_surface<GT>& surface, const std::vector<Shape_part>& parts)
+{
+  std::vector<Dtriangle> largest;
+  for(std::size_t t : parts.front().triangles) largest.push_back(surface.triangles[t]);
+  return largest;
+}
+
+// The settings of a refinement on the whole `surface` at the scale of its part `part`: the
+// weights of the part's grid, the band of the whole.
+template <typename GT>
+Isp_settings part_scale_settings(const Triangle_surface<GT>& surface, const Triangle_surface<GT>& part,
+                                 const Detection_settings& settings)
+{
+  Isp_settings isp = isp_settings(part.grid, settings.isp_iterations, surface.gedt);
+  isp.radius = part.frame.radius;
+  return isp;
+}
+
 // The planes of a surface whose parts lie far apart, in its local coordinates: those of its
-// largest part, detected alone, and the bisectors of alike parts, refined and measured on the
-// whole surface with the weights of the largest part's grid.
+// largest part `part`, detected alone, and the bisectors of alike parts, refined and measured on
+// the whole surface at the part's scale.
+template <typename GT, typename NamedParameters>
+std::vector<Principal_symmetry<GT>> symmetries_at_part_scale(const Triangle_surface<GT>& surface,
+                                                             const std::vector<Shape_part>& parts,
+                                                             const Triangle_surface<GT>& part,
+                                                             const Detection_settings& settings, const NamedParameters& np)
+{
+  Progress_stage stage(0., parts_apart_detection_share);
+  std::vector<Dplane> candidates = bisectors_of_alike_parts(parts);
+  for(const Principal_symmetry<GT>& s : detection_of_surface(part, settings, np, true).symmetries)
+    candidates.push_back(to_dplane(s.plane));
+  throw_if_cancelled(); // the part's detection keeps what it has; this one stops
+  stage.move_to(parts_apart_detection_share, 1.);
+  std::vector<Principal_symmetry<GT>> symmetries =
+    refined_at_part_scale(candidates, parts.front().centroid, surface.gedt, surface_samples(surface.triangles, settings.sampling),
+                          surface.matcher, part_scale_settings(surface, part, settings));
+  keep_groups_and_strongest(symmetries, settings.candidates, false);
+  return symmetries;
+}
+
 template <typename GT, typename NamedParameters>
 std::vector<Principal_symmetry<GT>> symmetries_of_parts_apart(const Triangle_surface<GT>& surface,
                                                               const std::vector<Shape_part>& parts,
                                                               const Detection_settings& settings, const NamedParameters& np)
 {
   Progress_stage stage(0., parts_apart_surface_share);
-  std::vector<Dtriangle> largest;
-  for(std::size_t t : parts.front().triangles) largest.push_back(surface.triangles[t]);
-  const Triangle_surface<GT> part(std::move(largest), settings.grid);
-  stage.move_to(parts_apart_surface_share, parts_apart_detection_share);
-  std::vector<Dplane> candidates = bisectors_of_alike_parts(parts);
-  for(const Principal_symmetry<GT>& s : detection_of_surface(part, settings, np, true).symmetries)
-    candidates.push_back(to_dplane(s.plane));
-  throw_if_cancelled(); // the part's detection keeps what it has; this one stops
-  stage.move_to(parts_apart_detection_share, 1.);
-  Isp_settings isp = isp_settings(part.grid, settings.isp_iterations, surface.gedt); // the whole band
-  isp.radius = part.frame.radius;
-  std::vector<Principal_symmetry<GT>> symmetries =
-    refined_at_part_scale(candidates, parts.front().centroid, surface.gedt,
-                          surface_samples(surface.triangles, settings.sampling), surface.matcher, isp);
-  keep_groups_and_strongest(symmetries, settings.candidates, false);
-  return symmetries;
+  const Triangle_surface<GT> part(largest_part(surface, parts), settings.grid);
+  stage.move_to(parts_apart_surface_share, 1.);
+  return symmetries_at_part_scale(surface, parts, part, settings, np);
 }
 
 // The detection on a surface built with the grid options of `np`.

@@ -21,6 +21,7 @@
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
+#include <CGAL/Symmetry_transform/internal/detection/border_curve.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
 
 #include <Eigen/Dense>
@@ -107,6 +108,9 @@ struct Isp_settings
   // The centre of the shape: ISP fits its planes in coordinates relative to it, so that a shape
   // far from the origin is fitted as the same shape at the origin (isp::Local_frame).
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  // The border of a flat surface, if the shape is one (border_curve.h): the fine phase ends with
+  // the fit of an in-plane mirror to the border, which the area leaves loose. Must outlive it.
+  const Border_curve* border = nullptr;
 };
 
 // The band test of a GEDT, which it refers to (hence no temporary).
@@ -488,8 +492,23 @@ Isp_result iterative_symmetric_points_from_center(const std::vector<Eigen::Vecto
   return fine;
 }
 
+// The supported fraction of the shape that the reflection in `plane` maps onto it (weights at
+// sigma, exact matches).
+template <typename Matcher>
+double measured_support(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane, const Matcher& matcher,
+                        const Isp_settings& settings)
+{
+  std::vector<typename Matcher::Hint> hints(samples.size());
+  return isp_sums(samples, plane, matcher, settings, 1., hints).support / double(samples.size());
+}
+
 // ISP from `plane` (see iterative_symmetric_points_from_center()), in the input's coordinates:
 // the fit runs in coordinates relative to settings.center, and its plane comes back in the input's.
+// On a flat surface (settings.border) an in-plane mirror ends on its border (border_curve.h), its
+// support measured there; the fine phase alone fits it on the border only: near an exact mirror
+// the inside maps onto the inside whichever way it turns, and the walk, pulled only by the few
+// samples mapped beyond the border, may creep away from it (an image of exact planes of a flat
+// octagon, 8 degrees).
 template <typename Matcher, typename Walk_matcher = Matcher>
 Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& samples, const Dplane& plane,
                                       const Matcher& matcher, const Isp_settings& settings,
@@ -497,6 +516,12 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
                                       const std::function<bool(const Dplane&)>& abandon = {},
                                       const Walk_matcher* walk_matcher = nullptr)
 {
+  const bool on_border = settings.border != nullptr && phases != Isp_phase::COARSE;
+  auto fitted_on_border = [&](const Dplane& start) {
+    const Dplane fitted = mirror_refined_on_border(*settings.border, start, settings.sigma, settings.radius);
+    return Isp_result{fitted, measured_support(samples, fitted, matcher, settings), true, 0};
+  };
+  if(on_border && phases == Isp_phase::FINE && is_in_plane_mirror(*settings.border, plane)) return fitted_on_border(plane);
   const isp::Local_frame frame{{settings.center}};
   const isp::Local_matcher<Matcher> local_matcher(matcher, frame.center);
   std::optional<isp::Local_matcher<Walk_matcher>> local_walk_matcher;
@@ -505,6 +530,11 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
     frame.to_local(samples), frame.to_local(plane), local_matcher, frame.to_local(settings), phases,
     frame.to_local(abandon), local_walk_matcher ? &*local_walk_matcher : nullptr);
   result.plane = frame.to_input(result.plane);
+  if(on_border && is_in_plane_mirror(*settings.border, result.plane)) {
+    const unsigned iterations = result.iterations;
+    result = fitted_on_border(result.plane);
+    result.iterations = iterations;
+  }
   return result;
 }
 

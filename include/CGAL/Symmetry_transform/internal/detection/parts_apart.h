@@ -42,8 +42,8 @@ constexpr double parts_apart_radius_ratio = 8.;
 constexpr double alike_parts_tolerance = 0.02;
 // Refined planes closer than this (sine of the angle; offset over the part's radius) are one.
 constexpr double same_part_plane_tolerance = 1e-4;
-// The shares of the progress: the largest part's surface, then its detection; the refinements
-// take the rest.
+// The shares of the progress: the largest part's surface; then, of the rest, its detection; the
+// refinements take the rest.
 constexpr double parts_apart_surface_share = 0.1;
 constexpr double parts_apart_detection_share = 0.5;
 // The bisectors tried, those of the alike parts nearest to the largest: each is a refinement on

@@ -14,6 +14,7 @@
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/detection/candidates.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/detection/mirror_families.h>
 #include <CGAL/Symmetry_transform/internal/detection/plane_group.h>
 #include <CGAL/Symmetry_transform/internal/detection/settings.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>
@@ -34,6 +35,9 @@ constexpr double unstable_reach_in_bins = 3.;
 // The coarse phase of ISP stops within about a bin of the optimum: a plane closer than two bins
 // to an accepted one would only find that plane again.
 constexpr double merge_reach_in_bins = 2.;
+// A candidate that leaves its bin is kept if its refined plane maps this much of the shape onto
+// itself: an exact symmetry (0.99 to 1 on meshes), not a creeping approximate one.
+constexpr double exact_unstable_support = 0.99;
 // Most candidates are dropped as duplicates or unstable; beyond this many per plane asked for,
 // the weaker ones would be cut off anyway.
 constexpr std::size_t candidates_per_plane = 10;
@@ -88,6 +92,14 @@ Candidate_outcome refine_candidate(const Reflective_symmetry_transform<GT>& prst
                         : !stays_near_bin(prst, refined.plane, bin, unstable_reach_in_bins) ? "left its bin"
                         : !settled || !(refined.support > 0.)                               ? "no convergence"
                                                                                             : nullptr;
+  // An exact symmetry whose maximum of the transform lies beyond the reach of its bin (the
+  // transform of a flat shape is blurred along its plane): refined to its end and kept.
+  if(verdict != nullptr && !seen && settled && refined.support >= exact_unstable_support) {
+    auto near_accepted = [&](const Dplane& plane) { return accepted.near(plane, merge_reach_in_bins); };
+    const Isp_result free =
+      iterative_symmetric_points(samples, refined.plane, matcher, settings, Isp_phase::FINE, near_accepted, walk_matcher);
+    if(!near_accepted(free.plane) && free.support >= exact_unstable_support) refined = free, verdict = nullptr;
+  }
   return {coarse, refined, seen || !settled ? 0u : refined.iterations, verdict};
 }
 
@@ -129,8 +141,43 @@ struct Plane_group_state
   std::size_t paired;
   Accepted_planes tried;
   std::size_t added;
-  bool infinite; // two exact planes meet at an angle no pi m / n: a continuous family, cut as found
+  // Two exact planes met at an angle no pi m / n, and a plane turned between them about their line
+  // is a mirror too: every plane through the line is one (mirror_families.h). Images are then no
+  // longer generated: the family holds them all.
+  std::vector<Plane_pencil> pencils;
+
+  bool infinite() const { return !pencils.empty(); }
+
+  // Whether `plane` belongs to the family of mirrors found (through the pencil's line, or through
+  // the sphere's centre), to within `reach`.
+  bool in_family(const Dplane& plane, const Accepted_planes& reach) const
+  {
+    const double angle = merge_reach_in_bins * reach.angle, distance = merge_reach_in_bins * reach.distance;
+    if(pencils.size() > 1) {
+      const Eigen::Vector3d center = nearest_point(pencils[0], pencils[1]);
+      return std::abs(plane.normal.dot(center) - plane.offset) < distance;
+    }
+    return infinite() && pencils[0].contains(plane, angle, distance);
+  }
+
+  // Whether the common line of exact planes `a` and `b` may make a new pencil: not if one holds both.
+  bool new_pencil(const Dplane& a, const Dplane& b, const Accepted_planes& reach) const
+  {
+    return pencils.size() < 2 && !(infinite() && in_family(a, reach) && in_family(b, reach));
+  }
 };
+
+// Whether every plane through the common line of exact planes `a` and `b` (at an angle no
+// pi m / n) is a mirror: whether their member turned by pencil_test_angle from `a`, refined,
+// stays there and maps the shape onto itself as well (refined_image()).
+template <typename Matcher, typename Walk_matcher>
+bool holds_a_pencil(const Dplane& a, const Dplane& b, double least_support, const std::vector<Eigen::Vector3d>& samples,
+                    const Matcher& matcher, const Isp_settings& settings, const Walk_matcher* walk_matcher,
+                    const Accepted_planes& accepted)
+{
+  const Dplane member = turned_about(common_line(a, b, accepted.center), a, pencil_test_angle);
+  return refined_image(member, least_support, samples, matcher, settings, walk_matcher, accepted).has_value();
+}
 
 // The planes of the group that the exact planes of `result` generate, appended to it: each image
 // of one by the reflection in another that is not there yet, refined and tested. Accepted exact
@@ -141,16 +188,24 @@ bool complete_plane_group(const Voxel_grid<GT>& gedt, const std::vector<Eigen::V
                           Accepted_planes& accepted, Plane_group_state& group, std::vector<Principal_symmetry<GT>>& result)
 {
   if(!result.empty() && result.back().support >= group_generator_support) group.generators.push_back(result.size() - 1);
-  for(; group.paired < group.generators.size() && !group.infinite; ++group.paired) // new generators join the loop
+  for(; group.paired < group.generators.size(); ++group.paired) // new generators join the loop
     for(std::size_t h = 0; h < group.paired; ++h) {
       const Principal_symmetry<GT> g_plane = result[group.generators[group.paired]], h_plane = result[group.generators[h]];
       const Dplane a = to_dplane(g_plane.plane), b = to_dplane(h_plane.plane);
       if(generated_order(a, b, max_order) == 0) {
-        // Parallel planes (of a bounded shape, never both exact) generate nothing; others a
-        // continuous family (a sphere's, a surface of revolution's), which no list holds.
-        group.infinite = group.infinite || !parallel_planes(a, b);
+        // Parallel planes (of a bounded shape, never both exact) generate nothing; others, if a
+        // third plane through their line holds, a continuous family (a sphere's, a surface of
+        // revolution's), which no list holds.
+        if(parallel_planes(a, b) || !group.new_pencil(a, b, accepted)) continue;
+        const std::optional<bool> pencil = unless_cancelled([&] {
+          return holds_a_pencil(a, b, (std::min)(g_plane.support, h_plane.support), samples, matcher, settings,
+                                walk_matcher, accepted);
+        });
+        if(!pencil) return false;
+        if(*pencil) group.pencils.push_back(common_line(a, b, accepted.center));
         continue;
       }
+      if(group.infinite()) continue;
       for(const Dplane& image : {reflected(a, b), reflected(b, a)}) {
         if(group.added >= largest_plane_group(max_order) || accepted.near(image, merge_reach_in_bins) ||
            group.tried.near(image, merge_reach_in_bins))
@@ -179,7 +234,7 @@ template <typename GT>
 bool worth_refining_beyond_cap(const Reflective_symmetry_transform<GT>& prst, const std::array<std::size_t, 3>& bin,
                                const std::array<std::size_t, 3>& strongest, const Plane_group_state& group)
 {
-  return !group.generators.empty() && !group.infinite && prst.value(bin) >= exact_candidate_fraction * prst.value(strongest);
+  return !group.generators.empty() && !group.infinite() && prst.value(bin) >= exact_candidate_fraction * prst.value(strongest);
 }
 
 // The planes to return, strongest first: every exact one unless the user chose the cap or the
@@ -215,7 +270,7 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
                                                       const Walk_matcher* walk_matcher = nullptr)
 {
   Accepted_planes accepted{{}, prst.bins().theta_step(), prst.bins().offset_step(), center_of(prst.bins())};
-  Plane_group_state group{{}, 0, {{}, accepted.angle, accepted.distance, accepted.center}, 0, false};
+  Plane_group_state group{{}, 0, {{}, accepted.angle, accepted.distance, accepted.center}, 0, {}};
   std::vector<Principal_symmetry<GT>> result;
   std::vector<std::array<std::size_t, 3>> candidates =
     symmetry_candidates(prst, options.symmetry_threshold, options.laplacian_threshold);
@@ -224,6 +279,7 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
   for(const auto& bin : candidates) {
     const bool beyond_cap = result.size() >= options.max_planes;
     if(beyond_cap && (options.max_planes_given || !worth_refining_beyond_cap(prst, bin, candidates.front(), group))) continue;
+    if(group.in_family(to_dplane(prst.plane(bin)), accepted)) continue; // a member of the family found
     const auto start = std::chrono::steady_clock::now();
     const std::optional<Candidate_outcome> refined = unless_cancelled([&] {
       report_progress(std::size_t(&bin - candidates.data()), candidates.size());
@@ -236,12 +292,14 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
     if(outcome.verdict != nullptr || (beyond_cap && outcome.refined.support < group_generator_support)) continue;
     accepted.planes.push_back(outcome.coarse.plane);
     accepted.planes.push_back(outcome.refined.plane);
+    if(group.in_family(outcome.refined.plane, accepted)) continue;
     const typename GT::Plane_3 plane = to_plane<GT>(outcome.refined.plane);
     result.push_back({plane, symmetry_measure(gedt, plane), outcome.refined.support});
     if(!complete_plane_group(gedt, samples, matcher, settings, options.max_order, walk_matcher, accepted, group, result))
       break;
   }
-  keep_groups_and_strongest(result, options, group.infinite);
+  report_mirror_families(result, group.pencils, merge_reach_in_bins * accepted.angle, merge_reach_in_bins * accepted.distance);
+  keep_groups_and_strongest(result, options, group.infinite());
   return result;
 }
 

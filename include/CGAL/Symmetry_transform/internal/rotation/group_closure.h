@@ -45,8 +45,9 @@ inline Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a a
 }
 
 // The axis of a rotation, through its point nearest to `center`, with the order n <= max_order
-// of its angle 2 pi m / n (m, n coprime); none for the identity, a screw motion, or an angle that
-// is no such fraction.
+// of its angle 2 pi m / n (m, n coprime), or 0 for an angle that is no such fraction (the powers
+// of that rotation are dense: of symmetries, a continuous axis, such as two flips of a cylinder
+// give); none for the identity or a screw motion.
 inline std::optional<Axis_candidate> axis_of(const Rigid_motion& r, int max_order, const Eigen::Vector3d& center,
                                              double radius)
 {
@@ -62,8 +63,8 @@ inline std::optional<Axis_candidate> axis_of(const Rigid_motion& r, int max_orde
   if(angle < closure_angle_tolerance || !(direction.norm() > 0.)) return std::nullopt;
   direction.normalize();
   if(std::abs(r.translation.dot(direction)) > closure_screw_tolerance * radius) return std::nullopt;
-  const int order = fraction_denominator(angle / (2. * CGAL_PI), max_order, closure_angle_tolerance / (2. * CGAL_PI));
-  if(order < 2) return std::nullopt;
+  const int n = fraction_denominator(angle / (2. * CGAL_PI), max_order, closure_angle_tolerance / (2. * CGAL_PI));
+  const int order = n >= 2 ? n : 0;
   // The axis point p solves (I - L) p = t; the least-squares solution of least norm from the
   // centre is the axis's point nearest to it.
   const Eigen::Matrix3d fixed = Eigen::Matrix3d::Identity() - l;

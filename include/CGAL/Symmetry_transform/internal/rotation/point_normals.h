@@ -30,6 +30,7 @@ class Point_normal_matcher
 
 public:
   static constexpr bool has_normals = true;
+  static constexpr bool matches_on_triangles = false;
   // Nothing to start from: a Kd-tree search is cheap.
   struct Hint
   {

@@ -15,7 +15,10 @@
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
+#include <CGAL/Symmetry_transform/internal/detection/mirror_families.h>
+#include <CGAL/Symmetry_transform/internal/detection/plane_group.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis_refinement.h>
+#include <CGAL/Symmetry_transform/internal/detection/border_curve.h>
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
 #include <CGAL/Symmetry_transform/internal/rotation/coarse_alignment.h>
 #include <CGAL/Symmetry_transform/internal/rotation/group_closure.h>
@@ -133,6 +136,7 @@ struct Rotation_search
   Isp_settings settings;
   int max_order;
   bool verbose;
+  const Border_curve* border = nullptr; // of a flat surface: the order is tested there
 };
 
 
@@ -253,6 +257,65 @@ Found_rotation<GT> measured(const Rotation_search<GT, M, W>& s, const Daxis& axi
   return {canonical, {to_line<GT>(canonical), order, typename GT::FT(symmetry), typename GT::FT(support)}, sharp_support};
 }
 
+// The order of the rotations about `axis`, tested at `width` sigma on `order_probes`, or on the
+// border of a flat surface (border_curve.h).
+template <typename GT, typename M, typename W>
+Rotation_order order_about(const Rotation_search<GT, M, W>& s, const std::vector<Eigen::Vector3d>& order_probes,
+                           const Daxis& axis, double width)
+{
+  if(s.border != nullptr) return rotation_order(s.border->probes, axis, s.max_order, s.border->matcher, s.settings, width);
+  return rotation_order(order_probes, axis, s.max_order, s.walk_matcher, s.settings, width);
+}
+
+// A found rotation whose support at sigma / 2 is at least 0.99 is exact to the accuracy of the
+// samples (exact symmetries: 0.99 to 1; the approximate flips of blade.off, a thin blade not
+// quite symmetric: 0.90 to 0.95). What two exact rotations generate needs no refinement: an
+// image of an exact axis by an exact rotation is an axis of the same order, taken as it is, and
+// the axis of their product is exact, only its order is tested, at the width the refinement
+// narrows to on an exact symmetry, sigma / 4.
+constexpr double exact_rotation_support = 0.99;
+constexpr double exact_rotation_width = 0.25;
+
+// On a flat surface, a flip about a line of its plane is the reflection in that plane after the
+// one in the plane across it through the line. The flip is refined as that mirror, by ISP, which
+// ends on the border (border_curve.h): exact where a fit of the axis to the normals is not (the
+// normals are all alike); its axis is the line where the mirror meets the surface's plane. None
+// for other axes.
+template <typename GT, typename M, typename W>
+std::optional<Daxis> refined_flip_of_flat_surface(const Rotation_search<GT, M, W>& s, const Axis_candidate& candidate)
+{
+  if(s.border == nullptr || candidate.order != 2) return std::nullopt;
+  const Dplane& flat = s.border->plane;
+  if(std::abs(candidate.axis.direction.dot(flat.normal)) > std::sin(coarse_tolerance * same_axis_degrees * CGAL_PI / 180.))
+    return std::nullopt;
+  const Eigen::Vector3d normal = flat.normal.cross(candidate.axis.direction).normalized();
+  const Isp_result mirror = iterative_symmetric_points(s.samples, Dplane{normal, normal.dot(candidate.axis.point)}, s.matcher,
+                                                       s.settings, Isp_phase::BOTH, {}, &s.walk_matcher);
+  if(parallel_planes(mirror.plane, flat)) return std::nullopt;
+  const Plane_pencil line = common_line(mirror.plane, flat, s.mass.center());
+  return Daxis{line.point, line.direction};
+}
+
+// On a flat surface, an axis across its plane: its order tested on the border at sigma / 2, and
+// for an order of 2 or more, its centre fitted on the border (border_curve.h); through the
+// centre of mass otherwise (a disc's). None for other axes.
+template <typename GT, typename M, typename W>
+std::optional<Axis_refinement> refined_turn_of_flat_surface(const Rotation_search<GT, M, W>& s,
+                                                            const Axis_candidate& candidate, Rotation_order& order)
+{
+  if(s.border == nullptr) return std::nullopt;
+  const Dplane& flat = s.border->plane;
+  if(candidate.axis.direction.cross(flat.normal).norm() > std::sin(coarse_tolerance * same_axis_degrees * CGAL_PI / 180.))
+    return std::nullopt;
+  Axis_refinement refined;
+  refined.axis = Daxis{s.mass.center(), flat.normal};
+  order = order_about(s, {}, refined.axis, 0.5);
+  if(order.order >= 2)
+    refined.axis.point = turn_center_on_border(*s.border, refined.axis.point, order.order, s.settings.sigma, s.mass.radius());
+  refined.width = exact_rotation_width;
+  return refined;
+}
+
 // A coarse axis refined on the surface, its order found, measured; none if it heads for an axis
 // already `found`, if no rotation holds, or if it maps less than min_rotation_support of the
 // shape onto the shape. The order is tested on the walk's axis (at sigma / 2, or at the narrower
@@ -273,7 +336,7 @@ std::optional<Found_rotation<GT>> refined_rotation(const Rotation_search<GT, M, 
   // reached; the exact end of the refinement is run only where the order is the one assumed.
   Rotation_order order;
   const Axis_polish_if test_order = [&](const Axis_refinement& r) {
-    order = rotation_order(order_probes, r.axis, s.max_order, s.walk_matcher, s.settings, (std::min)(r.width, 0.5));
+    order = order_about(s, order_probes, r.axis, (std::min)(r.width, 0.5));
     return true;
   };
   auto wrong_order = [&]() { return order.order > 0 && order.order % candidate.order != 0; };
@@ -281,9 +344,20 @@ std::optional<Found_rotation<GT>> refined_rotation(const Rotation_search<GT, M, 
     return refine_axis(s.samples, axis, refinement_angles(k), s.matcher, s.walk_matcher, s.settings, center,
                        heading_for_found, polish_if);
   };
-  Axis_refinement refined =
-    refine(candidate.axis, candidate.order, [&](const Axis_refinement& r) { return test_order(r) && !wrong_order(); });
-  if(!refined.abandoned && wrong_order()) refined = refine(refined.axis, order.best_order, test_order);
+  Axis_refinement refined;
+  if(const std::optional<Daxis> flip = refined_flip_of_flat_surface(s, candidate)) {
+    refined.axis = *flip;
+    refined.width = exact_rotation_width;
+    refined.abandoned = heading_for_found(*flip);
+    test_order(refined);
+  } else if(const std::optional<Axis_refinement> turn = refined_turn_of_flat_surface(s, candidate, order)) {
+    refined = *turn;
+    refined.abandoned = heading_for_found(refined.axis);
+  } else {
+    refined =
+      refine(candidate.axis, candidate.order, [&](const Axis_refinement& r) { return test_order(r) && !wrong_order(); });
+    if(!refined.abandoned && wrong_order()) refined = refine(refined.axis, order.best_order, test_order);
+  }
   std::optional<Found_rotation<GT>> result;
   if(!refined.abandoned && order.order >= 0) result = measured(s, refined.axis, order.order);
   const bool kept = result && result->sharp_support >= min_rotation_support;
@@ -417,14 +491,6 @@ bool flip_of_continuous(const Daxis& axis, const std::vector<Found_rotation<GT>>
 // group closure starts from the axes whose support at sigma / 2 is at least 0.95 (exact ones
 // measure above 0.99; with 0.2 % vertex noise, 0.99).
 constexpr double min_generator_support = 0.95;
-// A found rotation whose support at sigma / 2 is at least 0.99 is exact to the accuracy of the
-// samples (exact symmetries: 0.99 to 1; the approximate flips of blade.off, a thin blade not
-// quite symmetric: 0.90 to 0.95). What two exact rotations generate needs no refinement: an
-// image of an exact axis by an exact rotation is an axis of the same order, taken as it is, and
-// the axis of their product is exact, only its order is tested, at the width the refinement
-// narrows to on an exact symmetry, sigma / 4.
-constexpr double exact_rotation_support = 0.99;
-constexpr double exact_rotation_width = 0.25;
 
 // The generators of the group: the consistent discrete axes found whose support at sigma / 2 is
 // at least `min_support`, each scored by that support; flips about continuous axes left out
@@ -443,20 +509,21 @@ std::vector<Axis_candidate> group_generators(const std::vector<Found_rotation<GT
 // An axis the group closure generated from found ones: refined and tested as the others if one
 // of them is not exact; else measured as it is, with the order of the axis it is an image of,
 // or, for the axis of a product, the order tested there (refined as the others if that order is
-// not a multiple of the product's). None if it maps less than min_rotation_support of the shape
+// not a multiple of the product's, or not continuous where the product's angle is irrational). None if it maps less than min_rotation_support of the shape
 // onto the shape.
 template <typename GT, typename M, typename W>
 std::optional<Found_rotation<GT>> generated_rotation(const Rotation_search<GT, M, W>& s, const Axis_candidate& c,
                                                      bool image, const std::vector<Eigen::Vector3d>& order_probes,
                                                      const std::vector<Found_rotation<GT>>& found)
 {
+  if(c.order == 0 && c.score < exact_rotation_support) return std::nullopt; // approximate: the angle says nothing
   if(c.score < exact_rotation_support) return refined_rotation(s, c, order_probes, found);
   int order = c.order;
   if(!image) {
-    const Rotation_order tested =
-      rotation_order(order_probes, c.axis, s.max_order, s.walk_matcher, s.settings, exact_rotation_width);
-    if(tested.order < 0 || (tested.order > 0 && tested.order % c.order != 0))
-      return refined_rotation(s, c, order_probes, found);
+    const Rotation_order tested = order_about(s, order_probes, c.axis, exact_rotation_width);
+    const bool holds = c.order == 0 ? tested.order == 0 : tested.order == 0 || (tested.order > 0 && tested.order % c.order == 0);
+    if(!holds && c.order == 0) return std::nullopt; // no continuous axis: nothing to refine towards
+    if(!holds) return refined_rotation(s, c, order_probes, found);
     order = tested.order;
   }
   const Found_rotation<GT> result = measured(s, c.axis, order);

@@ -21,6 +21,7 @@
 #include <CGAL/Symmetry_transform/internal/rotation/rotation_detection.h>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -66,11 +67,52 @@ std::vector<Rotational_symmetry<GT>> to_input(const Local_coordinates& local, st
   return rotations;
 }
 
+// The rotations of a surface whose parts lie far apart (parts_apart.h), in its local coordinates:
+// the products of its exact mirrors (found at the scale of its largest part), each measured on
+// the whole surface at that scale, its order tested there. The search of directions and the
+// refinement, on a grid that sees each part as a blob, would find round blobs and continuous axes.
+template <typename GT, typename NamedParameters>
+std::vector<Rotational_symmetry<GT>> rotations_of_parts_apart(const Triangle_surface<GT>& surface,
+                                                              const std::vector<Shape_part>& parts, int max_order,
+                                                              const NamedParameters& np)
+{
+  Progress_stage stage(0., parts_apart_surface_share);
+  const Detection_settings settings = detection_settings(np);
+  const Triangle_surface<GT> part(largest_part(surface, parts), settings.grid);
+  stage.move_to(parts_apart_surface_share, 1.);
+  std::vector<Dplane> mirrors;
+  for(const Principal_symmetry<GT>& s : symmetries_at_part_scale(surface, parts, part, settings, np))
+    if(s.support >= group_generator_support) mirrors.push_back(to_dplane(s.plane));
+  const std::vector<Eigen::Vector3d> samples = surface_samples(surface.triangles, np);
+  const std::vector<Eigen::Vector3d> normals = normals_at(samples, surface.matcher);
+  const Mass_distribution mass(surface.triangles);
+  const Isp_settings isp = part_scale_settings(surface, part, settings);
+  const Rotation_search<GT, Triangle_matcher, Triangle_matcher> search{
+    surface.gedt, surface.gedt, isp.sigma, samples, normals, mass, surface.matcher, surface.matcher, isp, max_order,
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
+  const std::vector<Eigen::Vector3d> order_probes = spread_subset(samples, order_samples);
+  std::vector<Found_rotation<GT>> found;
+  for(const Axis_candidate& c : plane_pair_candidates(mirrors, max_order, mass.center())) {
+    const Rotation_order order = order_about(search, order_probes, c.axis, exact_rotation_width);
+    if(order.order < 0) continue;
+    Found_rotation<GT> f = measured(search, c.axis, order.order);
+    // The grid sees blobs: its measure is that of the parts' places, the support that of their shapes.
+    f.symmetry.symmetry = (std::min)(f.symmetry.symmetry, f.symmetry.support);
+    if(f.sharp_support >= min_rotation_support) found.push_back(f);
+  }
+  std::vector<Rotational_symmetry<GT>> result;
+  for(const Found_rotation<GT>& f : consistent(std::move(found), mass.center(), part.frame.radius)) result.push_back(f.symmetry);
+  return result;
+}
+
 // `extra`: further candidate axes, in the input's coordinates, as the result.
 template <typename GT, typename NamedParameters>
 std::vector<Rotational_symmetry<GT>> rotations_of_surface(const Triangle_surface<GT>& surface, int max_order,
                                                           const std::vector<Axis_candidate>& extra, const NamedParameters& np)
 {
+  const std::vector<Shape_part> parts = parts_of(surface.triangles, surface.gedt, surface.grid);
+  if(parts_lie_apart(parts, surface.frame.radius))
+    return to_input(surface.local, rotations_of_parts_apart(surface, parts, max_order, np));
   Progress_stage stage(0., rotation_grids_share);
   const auto coarse_np = np.grid_resolution(int(coarse_resolution(np)));
   const Voxel_grid<GT> coarse = gaussian_distance_transform_of_triangles<GT>(
@@ -78,11 +120,14 @@ std::vector<Rotational_symmetry<GT>> rotations_of_surface(const Triangle_surface
   const std::vector<Eigen::Vector3d> samples = surface_samples(surface.triangles, np);
   const std::vector<Eigen::Vector3d> normals = normals_at(samples, surface.field);
   const Mass_distribution mass(surface.triangles);
+  Isp_settings isp = isp_settings(np, surface.gedt);
+  const std::optional<Border_curve> border = border_curve(surface.triangles, surface.frame.radius, isp.sigma);
+  isp.border = border ? &*border : nullptr;
   stage.move_to(rotation_grids_share, 1.);
   const Rotation_search<GT, Triangle_matcher, Closest_triangle_field> search{
     surface.gedt, coarse, grid_settings(coarse_np, coarse.radius()).sigma(), samples, normals, mass, surface.matcher,
-    surface.field, isp_settings(np, surface.gedt), max_order,
-    parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false)};
+    surface.field, isp, max_order, parameters::choose_parameter(parameters::get_parameter(np, internal_np::verbose), false),
+    border ? &*border : nullptr};
   std::vector<Axis_candidate> local_extra = extra;
   for(Axis_candidate& c : local_extra) c.axis.point = surface.local.to_local(c.axis.point);
   return to_input(surface.local, rotational_symmetries(search, local_extra));
