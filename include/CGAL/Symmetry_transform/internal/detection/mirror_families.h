@@ -94,6 +94,14 @@ void drop_turned_copies(std::vector<Principal_symmetry<GT>>& result, const Plane
   result = std::move(kept);
 }
 
+// Whether `plane` belongs to the family of mirrors of `pencils` (one: every plane through its
+// line; two: every plane through the lines' common point), to within `angle` and `distance`.
+inline bool in_mirror_family(const std::vector<Plane_pencil>& pencils, const Dplane& plane, double angle, double distance)
+{
+  if(pencils.size() > 1) return std::abs(plane.normal.dot(nearest_point(pencils[0], pencils[1])) - plane.offset) < distance;
+  return !pencils.empty() && pencils[0].contains(plane, angle, distance);
+}
+
 // The planes of `result` that belong to the family of `pencils` (one: every plane through its line;
 // more: every plane through the lines' common point) replaced by the strongest of them, marked.
 // Members within `angle` and `distance` (the reach of a merge of candidates).
@@ -105,8 +113,7 @@ void report_mirror_families(std::vector<Principal_symmetry<GT>>& result, const s
   const bool sphere = pencils.size() > 1;
   const Eigen::Vector3d center = sphere ? nearest_point(pencils[0], pencils[1]) : pencils[0].point;
   auto member = [&](const Principal_symmetry<GT>& s) {
-    const Dplane p = to_dplane(s.plane);
-    return sphere ? std::abs(p.normal.dot(center) - p.offset) < distance : pencils[0].contains(p, angle, distance);
+    return in_mirror_family(pencils, to_dplane(s.plane), angle, distance);
   };
   const auto strongest = std::max_element(result.begin(), result.end(), [&](const auto& a, const auto& b) {
     return (member(a) ? a.symmetry : -1.) < (member(b) ? b.symmetry : -1.);

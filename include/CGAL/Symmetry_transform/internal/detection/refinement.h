@@ -152,12 +152,7 @@ struct Plane_group_state
   // the sphere's centre), to within `reach`.
   bool in_family(const Dplane& plane, const Accepted_planes& reach) const
   {
-    const double angle = merge_reach_in_bins * reach.angle, distance = merge_reach_in_bins * reach.distance;
-    if(pencils.size() > 1) {
-      const Eigen::Vector3d center = nearest_point(pencils[0], pencils[1]);
-      return std::abs(plane.normal.dot(center) - plane.offset) < distance;
-    }
-    return infinite() && pencils[0].contains(plane, angle, distance);
+    return in_mirror_family(pencils, plane, merge_reach_in_bins * reach.angle, merge_reach_in_bins * reach.distance);
   }
 
   // Whether the common line of exact planes `a` and `b` may make a new pencil: not if one holds both.

@@ -14,11 +14,11 @@
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
+#include <CGAL/Symmetry_transform/internal/detection/border_curve.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
 #include <CGAL/Symmetry_transform/internal/detection/mirror_families.h>
 #include <CGAL/Symmetry_transform/internal/detection/plane_group.h>
 #include <CGAL/Symmetry_transform/internal/rotation/axis_refinement.h>
-#include <CGAL/Symmetry_transform/internal/detection/border_curve.h>
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
 #include <CGAL/Symmetry_transform/internal/rotation/coarse_alignment.h>
 #include <CGAL/Symmetry_transform/internal/rotation/group_closure.h>
@@ -276,6 +276,13 @@ Rotation_order order_about(const Rotation_search<GT, M, W>& s, const std::vector
 constexpr double exact_rotation_support = 0.99;
 constexpr double exact_rotation_width = 0.25;
 
+// Candidate axes of a flat surface within this (sine of an angle) of its plane, or of its
+// normal, are refined as in-plane flips, or as the axis across it: the coarse alignment's reach.
+inline double flat_axis_tolerance()
+{
+  return std::sin(coarse_tolerance * same_axis_degrees * CGAL_PI / 180.);
+}
+
 // On a flat surface, a flip about a line of its plane is the reflection in that plane after the
 // one in the plane across it through the line. The flip is refined as that mirror, by ISP, which
 // ends on the border (border_curve.h): exact where a fit of the axis to the normals is not (the
@@ -286,8 +293,7 @@ std::optional<Daxis> refined_flip_of_flat_surface(const Rotation_search<GT, M, W
 {
   if(s.border == nullptr || candidate.order != 2) return std::nullopt;
   const Dplane& flat = s.border->plane;
-  if(std::abs(candidate.axis.direction.dot(flat.normal)) > std::sin(coarse_tolerance * same_axis_degrees * CGAL_PI / 180.))
-    return std::nullopt;
+  if(std::abs(candidate.axis.direction.dot(flat.normal)) > flat_axis_tolerance()) return std::nullopt;
   const Eigen::Vector3d normal = flat.normal.cross(candidate.axis.direction).normalized();
   const Isp_result mirror = iterative_symmetric_points(s.samples, Dplane{normal, normal.dot(candidate.axis.point)}, s.matcher,
                                                        s.settings, Isp_phase::BOTH, {}, &s.walk_matcher);
@@ -305,8 +311,7 @@ std::optional<Axis_refinement> refined_turn_of_flat_surface(const Rotation_searc
 {
   if(s.border == nullptr) return std::nullopt;
   const Dplane& flat = s.border->plane;
-  if(candidate.axis.direction.cross(flat.normal).norm() > std::sin(coarse_tolerance * same_axis_degrees * CGAL_PI / 180.))
-    return std::nullopt;
+  if(candidate.axis.direction.cross(flat.normal).norm() > flat_axis_tolerance()) return std::nullopt;
   Axis_refinement refined;
   refined.axis = Daxis{s.mass.center(), flat.normal};
   order = order_about(s, {}, refined.axis, 0.5);
@@ -509,8 +514,8 @@ std::vector<Axis_candidate> group_generators(const std::vector<Found_rotation<GT
 // An axis the group closure generated from found ones: refined and tested as the others if one
 // of them is not exact; else measured as it is, with the order of the axis it is an image of,
 // or, for the axis of a product, the order tested there (refined as the others if that order is
-// not a multiple of the product's, or not continuous where the product's angle is irrational). None if it maps less than min_rotation_support of the shape
-// onto the shape.
+// not a multiple of the product's, or not continuous where the product's angle is irrational).
+// None if it maps less than min_rotation_support of the shape onto the shape.
 template <typename GT, typename M, typename W>
 std::optional<Found_rotation<GT>> generated_rotation(const Rotation_search<GT, M, W>& s, const Axis_candidate& c,
                                                      bool image, const std::vector<Eigen::Vector3d>& order_probes,
