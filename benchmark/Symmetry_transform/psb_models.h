@@ -4,7 +4,8 @@
 //
 // Reading the Princeton Shape Benchmark's models (research use only: read from the folder given
 // on the command line, never committed) for the programs that run on it: retrieval_benchmark,
-// viewpoint_experiment. Its .off files are polygon soups with every defect, made meshes here.
+// viewpoint_experiment, peer_comparison. Its .off files are polygon soups with every defect, made
+// meshes here.
 
 #ifndef SYMMETRY_TRANSFORM_PSB_MODELS_H
 #define SYMMETRY_TRANSFORM_PSB_MODELS_H
@@ -21,10 +22,14 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "retrieval_evaluation.h"
 
 namespace psb_models {
 
@@ -104,6 +109,49 @@ inline std::filesystem::path model_path(const std::filesystem::path& data, int i
 {
   const std::string m = "m" + std::to_string(id);
   return data / "db" / std::to_string(id / 100) / m / (m + ".off");
+}
+
+// A model of the benchmark: "m<id> (<class>)" and its file.
+struct Model
+{
+  std::string name;
+  std::filesystem::path path;
+};
+
+// The first model of every class of the benchmark's test set (classes in the file's order).
+inline std::vector<Model> first_test_models(const std::string& data)
+{
+  std::ifstream in(std::filesystem::path(data) / "classification" / "test.cla");
+  const retrieval_evaluation::Classification c = retrieval_evaluation::read_classification(in);
+  std::vector<Model> models;
+  for(std::size_t i = 0; i < c.model_ids.size(); ++i) {
+    if(i > 0 && c.class_of[i] == c.class_of[i - 1]) continue;
+    const int id = c.model_ids[i];
+    models.push_back({"m" + std::to_string(id) + " (" + c.class_names[c.class_of[i]] + ")", model_path(data, id)});
+  }
+  return models;
+}
+
+struct Named_mesh
+{
+  std::string name;
+  Mesh mesh;
+};
+
+// Those models read with read_triangle_mesh(); the unreadable ones are reported and skipped.
+inline std::vector<Named_mesh> psb_shapes(const std::string& data)
+{
+  std::vector<Named_mesh> shapes;
+  for(const Model& m : first_test_models(data)) {
+    Named_mesh s{m.name, Mesh()};
+    try {
+      read_triangle_mesh(m.path.string(), s.mesh);
+      shapes.push_back(std::move(s));
+    } catch(const std::exception& e) {
+      std::cerr << "skipped " << s.name << ": " << e.what() << "\n";
+    }
+  }
+  return shapes;
 }
 
 } // namespace psb_models

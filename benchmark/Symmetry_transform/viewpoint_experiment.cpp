@@ -37,8 +37,6 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
@@ -51,7 +49,6 @@
 #include "benchmark_utilities.h"
 #include "detection_cache.h"
 #include "psb_models.h"
-#include "retrieval_evaluation.h"
 
 namespace {
 
@@ -305,30 +302,13 @@ Options parse(int argc, char** argv)
   return o;
 }
 
-// The first model of every class of the benchmark's test set (classes in the file's order).
-std::vector<Shape> psb_shapes(const std::string& data)
-{
-  std::ifstream in(std::filesystem::path(data) / "classification" / "test.cla");
-  const retrieval_evaluation::Classification c = retrieval_evaluation::read_classification(in);
-  std::vector<Shape> shapes;
-  for(std::size_t i = 0; i < c.model_ids.size(); ++i) {
-    if(i > 0 && c.class_of[i] == c.class_of[i - 1]) continue;
-    const int id = c.model_ids[i];
-    Shape s{"m" + std::to_string(id) + " (" + c.class_names[c.class_of[i]] + ")", Mesh()};
-    try {
-      psb_models::read_triangle_mesh(psb_models::model_path(data, id).string(), s.mesh);
-      shapes.push_back(std::move(s));
-    } catch(const std::exception& e) {
-      std::cerr << "skipped " << s.name << ": " << e.what() << "\n";
-    }
-  }
-  return shapes;
-}
-
 std::vector<Shape> shapes_of_set(const Options& o)
 {
   std::vector<Shape> shapes;
-  if(o.set == "psb") return psb_shapes(o.data);
+  if(o.set == "psb") {
+    for(psb_models::Named_mesh& s : psb_models::psb_shapes(o.data)) shapes.push_back({s.name, std::move(s.mesh)});
+    return shapes;
+  }
   if(o.set == "man-made") {
     for(const auto& make : st_man_made::man_made_shapes()) {
       st_man_made::Man_made_shape s = make();

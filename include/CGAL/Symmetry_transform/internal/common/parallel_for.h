@@ -6,6 +6,7 @@
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H
 
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/common/worker_pool.h>
 
 #include <algorithm>
 #include <condition_variable>
@@ -76,7 +77,8 @@ void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned 
 // with the thread count: each item's result must depend on the item alone (results summed over
 // items go through parallel_for_chunks(), whose chunks do not depend on the threads). The
 // calling thread runs slice 0 itself: one thread fewer to start, which matters for the many
-// short calls of ISP (a start costs tens of microseconds). The first exception thrown by a body
+// short calls of ISP; the others run on the workers of Worker_pool, or on threads of their own
+// when the pool is busy. The first exception thrown by a body
 // is rethrown in the caller, once every slice is done. Under a callback (progress.h), bodies
 // call parallel_step() after each item, or test stop_requested(), and return when cancelled.
 template <typename Body>
@@ -97,10 +99,12 @@ void parallel_for(std::size_t count, unsigned threads, const Body& body)
       errors[t] = std::current_exception();
     }
   };
-  std::vector<std::thread> workers;
-  for(unsigned t = 1; t < threads; ++t) workers.emplace_back(run, t);
-  run(0u);
-  for(std::thread& w : workers) w.join();
+  if(!Worker_pool::instance().run(threads, run)) {
+    std::vector<std::thread> workers;
+    for(unsigned t = 1; t < threads; ++t) workers.emplace_back(run, t);
+    run(0u);
+    for(std::thread& w : workers) w.join();
+  }
   for(const std::exception_ptr& e : errors)
     if(e) std::rethrow_exception(e);
 }

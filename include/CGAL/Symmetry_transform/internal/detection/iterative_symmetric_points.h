@@ -270,10 +270,11 @@ bool refit(const Isp_sums& s, Dplane& plane, double step_factor = 1.)
 //   is shorter than coarse_settled_step, at most coarse_max_iterations; its weights are those of
 //   the fine phase, as wider ones would let a big part of a composite shape pull the plane of a
 //   small one away from it;
-// - fine: on all samples, over-relaxed (steps doubled after each gain, up to max_step_factor; a
-//   step that does not raise the mean weight is not taken and the next one is half the last
-//   that did), until the mean weight stops growing; then, on an exact symmetry, with narrower
-//   weights. The mean weight never decreases.
+// - fine: on all samples (a walk first on the coarse ones: climb_from_coarse_samples()),
+//   over-relaxed (steps doubled after each gain, up to max_step_factor; a step that does not
+//   raise the mean weight is not taken and the next one is half the last that did), until the
+//   mean weight stops growing; then, on an exact symmetry, with narrower weights. The mean
+//   weight never decreases.
 // `abandon` may stop either phase early (no convergence).
 enum class Isp_phase { COARSE, FINE, BOTH };
 
@@ -390,6 +391,24 @@ double climb(const std::vector<Eigen::Vector3d>& samples, const Dplane& start, c
   return width;
 }
 
+// The fine phase of a walk: its first iterations on the coarse samples, an eighth of the cost,
+// up to their top at the width they settle on, then on all samples from there, which then take
+// a few iterations only (most of a climb goes on far from the top). Returns the width.
+template <typename Matcher>
+double climb_from_coarse_samples(const std::vector<Eigen::Vector3d>& samples,
+                                 const std::vector<Eigen::Vector3d>& coarse_samples, const Dplane& start,
+                                 const Matcher& matcher, const Isp_settings& settings,
+                                 std::vector<typename Matcher::Hint>& hints,
+                                 const std::function<bool(const Dplane&)>& abandon, Isp_result& fine)
+{
+  if(coarse_samples.empty()) return climb(samples, start, matcher, settings, hints, abandon, fine);
+  const double width = climb(coarse_samples, start, matcher, settings, hints, abandon, fine);
+  if(abandon && abandon(fine.plane)) return width;
+  relaxed_ascent(samples, matcher, settings, width, isp_sums(samples, fine.plane, matcher, settings, width, hints), hints,
+                 abandon, fine);
+  return width;
+}
+
 // The coordinates ISP works in: relative to the centre of the shape. In those of the input, a
 // plane far from the origin turns about the origin, hence moves by its angle times the distance:
 // its Gauss-Newton steps are ill-conditioned, its convergence test never settles, and the
@@ -482,7 +501,8 @@ Isp_result iterative_symmetric_points_from_center(const std::vector<Eigen::Vecto
     isp::climb(samples, fine.plane, matcher, settings, hints, abandon, fine);
     return fine;
   }
-  const double width = isp::climb(samples, fine.plane, *walk_matcher, settings, walk_hints, abandon, fine);
+  const double width =
+    isp::climb_from_coarse_samples(samples, coarse_samples, fine.plane, *walk_matcher, settings, walk_hints, abandon, fine);
   if(abandon && abandon(fine.plane)) return fine;
   // The walk ends with exact matches: on an exact symmetry, a few Gauss-Newton steps from the top
   // of the walk reach the exact optimum; on an approximate one, whose ridge is flat (steps would

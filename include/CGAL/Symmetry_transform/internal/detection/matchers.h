@@ -39,9 +39,10 @@ inline Eigen::Vector3d unit_normal(const Dtriangle& t)
   return to_eigen(CGAL::ORIGIN + CGAL::cross_product(t[1] - t[0], t[2] - t[0])).normalized();
 }
 
-// Exact closest points on a triangle soup, by its AABB tree; where large triangles cross the
-// inside of the soup (their boxes overlap deeper than deepest_box_overlap_for_tree), a search with
-// a hint tests the triangles of the cells near the query instead (triangle_cells.h).
+// Exact closest points on a triangle soup, by its AABB tree; on a small soup, or where large
+// triangles cross the inside of the soup (their boxes overlap deeper than
+// deepest_box_overlap_for_tree), a search with a hint tests the triangles of the cells near the
+// query instead (triangle_cells.h).
 class Triangle_matcher
 {
 public:
@@ -61,7 +62,7 @@ public:
     build_triangle_tree(tree_);
     tree_.accelerate_distance_queries();
     tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
-    if(mean_box_overlap(triangles) > deepest_box_overlap_for_tree) {
+    if(triangles.size() <= most_triangles_for_cells || mean_box_overlap(triangles) > deepest_box_overlap_for_tree) {
       cells_.emplace(triangles);
       if(!cells_->built()) cells_.reset(); // too many members (max_cell_members): the tree alone
     }
@@ -97,7 +98,7 @@ public:
 private:
   const std::vector<Dtriangle>& triangles_;
   Triangle_tree tree_;
-  std::optional<Triangle_cells> cells_; // only for soups whose boxes overlap deeply
+  std::optional<Triangle_cells> cells_; // for small soups and those whose boxes overlap deeply
 };
 
 // Approximate closest points on a triangle soup, about ten times cheaper than the exact search:
@@ -120,14 +121,7 @@ public:
                          double voxel_size, std::size_t resolution)
     : triangles_(triangles), exact_(exact), closest_triangles_(std::move(closest_triangles)), origin_(origin),
       voxel_size_(voxel_size), resolution_(long(resolution))
-  {
-    corners_.reserve(triangles.size());
-    normals_.reserve(triangles.size());
-    for(const Dtriangle& t : triangles) {
-      corners_.push_back({to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2])});
-      normals_.push_back(unit_normal(t));
-    }
-  }
+  {}
 
   Match closest(const Eigen::Vector3d& p, Hint& hint) const
   {
@@ -137,7 +131,7 @@ public:
       return exact_.closest(p, hint);
     }
     hint = {{to_dpoint(on_triangle), triangles_.begin() + t}, true};
-    return {on_triangle, normals_[std::size_t(t)]};
+    return {on_triangle, unit_normal(triangles_[std::size_t(t)])};
   }
 
   // The point nearest to p on the closest triangles of the 8 voxels around p, and its triangle;
@@ -153,8 +147,8 @@ public:
       const std::int32_t t = closest_triangles_[std::size_t(
         ((corner[2] + (c >> 2)) * resolution_ + corner[1] + ((c >> 1) & 1)) * resolution_ + corner[0] + (c & 1))];
       if(t < 0 || std::find(seen.begin(), seen.begin() + count, t) != seen.begin() + count) continue;
-      const std::array<Eigen::Vector3d, 3>& v = corners_[std::size_t(t)];
-      on_triangle[count] = closest_point_on_triangle(p, v[0], v[1], v[2]);
+      const Dtriangle& v = triangles_[std::size_t(t)];
+      on_triangle[count] = closest_point_on_triangle(p, to_eigen(v[0]), to_eigen(v[1]), to_eigen(v[2]));
       d2[count] = (p - on_triangle[count]).squaredNorm();
       seen[count++] = t;
     }
@@ -175,8 +169,6 @@ private:
 
   const std::vector<Dtriangle>& triangles_;
   const Triangle_matcher& exact_;
-  std::vector<std::array<Eigen::Vector3d, 3>> corners_;
-  std::vector<Eigen::Vector3d> normals_;
   std::vector<std::int32_t> closest_triangles_;
   std::array<double, 3> origin_;
   double voxel_size_;
