@@ -37,8 +37,7 @@
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Symmetry_transform/internal/common/cgal_aabb.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -62,6 +61,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "benchmark_utilities.h"
@@ -77,7 +77,7 @@ using detection_cache::cached;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+typedef CGAL::AABB_tree<CGAL::Symmetry_transform::internal::AABB_traits_3<K, Primitive>> Tree;
 namespace ST = CGAL::Symmetry_transform;
 namespace STI = CGAL::Symmetry_transform::internal;
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -99,6 +99,18 @@ int positive(const std::string& option, const std::string& text)
 // Scans
 // ---------------------------------------------------------------------------------------------
 
+// The point of a ray's first intersection with the mesh, if it is a point: a boost::variant
+// before CGAL 6.0, a std::variant since.
+template <typename Intersection>
+const K::Point_3* point_of(const Intersection& intersection)
+{
+#if CGAL_VERSION_NR >= 1060000000
+  return std::get_if<K::Point_3>(&intersection);
+#else
+  return boost::get<K::Point_3>(&intersection);
+#endif
+}
+
 // The points of a range scan from `eye` looking at `target`: a rays x rays grid over a square
 // field of view of 0.4 radian.
 std::vector<K::Point_3> range_scan(const Tree& tree, const K::Point_3& eye, const K::Point_3& target, int rays)
@@ -114,7 +126,7 @@ std::vector<K::Point_3> range_scan(const Tree& tree, const K::Point_3& eye, cons
       const double u = half_width * (2. * (i + 0.5) / rays - 1.), v = half_width * (2. * (j + 0.5) / rays - 1.);
       const auto hit = tree.first_intersection(K::Ray_3(eye, forward + u * right + v * up));
       if(hit)
-        if(const K::Point_3* p = boost::get<K::Point_3>(&hit->first)) points.push_back(*p);
+        if(const K::Point_3* p = point_of(hit->first)) points.push_back(*p);
     }
   return points;
 }

@@ -27,8 +27,7 @@
 // Figures and the commands that produced them: RESULTS.md.
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Symmetry_transform/internal/common/cgal_aabb.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -94,7 +93,7 @@ Mesh mesh_of(Soup s)
 std::vector<K::Point_3> symmetrized_positions(const Mesh& mesh, const K::Plane_3& plane)
 {
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
+  CGAL::AABB_tree<CGAL::Symmetry_transform::internal::AABB_traits_3<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
   const K::Vector_3 n = plane.orthogonal_vector();
   const auto reflect = [&](const K::Point_3& p) {
     return p - 2. * (n * (p - CGAL::ORIGIN) + plane.d()) / n.squared_length() * n;

@@ -108,7 +108,7 @@ void write_score_sphere(const std::vector<ST::Principal_symmetry<K>>& symmetries
 {
   Mesh sphere = ST::viewpoint_score_sphere(symmetries, 5);
   const examples::Extent<K::Point_3> extent = examples::extent_of_soup(soup.points, soup.triangles);
-  const auto score = sphere.property_map<Mesh::Vertex_index, double>("v:score").first;
+  const auto score = sphere.add_property_map<Mesh::Vertex_index, double>("v:score").first;
   auto colour = sphere.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
   for(Mesh::Vertex_index v : vertices(sphere)) {
     colour[v] = examples::dark_to_bright(high > low ? (score[v] - low) / (high - low) : 0.);

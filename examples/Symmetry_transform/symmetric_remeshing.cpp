@@ -109,10 +109,10 @@ double diagonal_of(const Mesh& mesh)
 struct Result
 {
   std::string name;
-  Mesh mesh;
+  Mesh mesh{};
   double seconds = 0.;
   ST::Approximation_error error{0., 0.};
-  std::vector<double> symmetry;
+  std::vector<double> symmetry{};
 };
 
 Result measured(Result r, const Mesh& input, const std::vector<K::Plane_3>& planes, std::size_t seed)

@@ -440,11 +440,11 @@ TEST(ExactKernel, ViewpointsOfThreeOrthogonalPlanesAreTheKnownOnes)
   expect_near(coordinates(worst.direction), {0., 0., 1.}, 1e-12);
   EXPECT_NEAR(worst.score, 0.3, 1e-12);
 
-  const Exact_mesh sphere = ST::viewpoint_score_sphere(exact, 2);
-  const Mesh inexact_sphere = ST::viewpoint_score_sphere(inexact, 2);
+  Exact_mesh sphere = ST::viewpoint_score_sphere(exact, 2);
+  Mesh inexact_sphere = ST::viewpoint_score_sphere(inexact, 2);
   EXPECT_EQ(num_vertices(sphere), 10u * 16u + 2u);
-  const auto score = sphere.property_map<Exact_mesh::Vertex_index, double>("v:score").first;
-  const auto inexact_score = inexact_sphere.property_map<Mesh::Vertex_index, double>("v:score").first;
+  const auto score = sphere.add_property_map<Exact_mesh::Vertex_index, double>("v:score").first;
+  const auto inexact_score = inexact_sphere.add_property_map<Mesh::Vertex_index, double>("v:score").first;
   for(Exact_mesh::Vertex_index v : vertices(sphere)) {
     const std::array<double, 3> p = coordinates(sphere.point(v));
     EXPECT_NEAR(score[v], 0.9 * std::abs(p[0]) + 0.6 * std::abs(p[1]) + 0.3 * std::abs(p[2]), 1e-12);

@@ -23,8 +23,7 @@
 #include "Symmetry_transform_test_shapes.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Symmetry_transform/internal/common/cgal_aabb.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -780,7 +779,7 @@ TEST(SymmetrySupport, TruePlaneSupportsEveryFaceAndATurnedPlaneMuchLess)
 double reference_support(const Surface_mesh& mesh, const Plane_3& plane, double sigma, std::size_t count)
 {
   typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+  typedef CGAL::AABB_tree<CGAL::Symmetry_transform::internal::AABB_traits_3<K, Primitive>> Tree;
   Tree tree(faces(mesh).first, faces(mesh).second, mesh);
   tree.accelerate_distance_queries();
   CGAL::Random rng(216);

@@ -25,8 +25,7 @@
 #include "Symmetry_transform_test_shapes.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Symmetry_transform/internal/common/cgal_aabb.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/pca_estimate_normals.h>
@@ -342,7 +341,7 @@ typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
 std::vector<Point_with_normal> with_face_normals(const Surface_mesh& mesh, const std::vector<Point_3>& points)
 {
   typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
-  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
+  CGAL::AABB_tree<CGAL::Symmetry_transform::internal::AABB_traits_3<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
   std::vector<Point_with_normal> result;
   for(const Point_3& p : points)
     result.emplace_back(p, CGAL::Polygon_mesh_processing::compute_face_normal(tree.closest_point_and_primitive(p).second,

@@ -30,6 +30,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -466,7 +467,13 @@ TEST(SymmetryFrame, FollowsTheDocumentedRules)
   const auto np = CGAL::parameters::grid_resolution(32).number_of_samples(300000).random_seed(1);
   const ST::Reflective_symmetry_transform<K> prst = ST::reflective_symmetry_transform(s.mesh, np);
   const double bin_angle = 5.6, bin_offset = 0.0625 * prst.radius();
-  const auto frame = [&](const std::vector<Symmetry>& planes) {
+  // The frame of the planes given as (plane, symmetry, support); the symmetries are not
+  // brace-initialised in the call, which g++ 12 compiles against CGAL 6 without the
+  // definition of the default constructor of Line_3 (an undefined reference at link time).
+  const auto frame = [&](const std::vector<std::tuple<Plane_3, double, double>>& given) {
+    std::vector<Symmetry> planes(given.size());
+    for(std::size_t i = 0; i < given.size(); ++i)
+      std::tie(planes[i].plane, planes[i].symmetry, planes[i].support) = given[i];
     return ST::internal::to_symmetry_frame<K>(ST::internal::symmetry_frame(mass, planes, prst));
   };
   // Three planes, the third 5 degrees off z and shifted, the second 5 degrees off perpendicular.

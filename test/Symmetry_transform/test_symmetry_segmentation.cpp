@@ -21,8 +21,7 @@
 #include "Symmetry_transform_test_shapes.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Symmetry_transform/internal/common/cgal_aabb.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
@@ -295,7 +294,7 @@ template <typename Mesh>
 double mirror_consistency(const Surface_mesh& mesh, const std::vector<std::size_t>& segment, const Plane_3& plane)
 {
   typedef CGAL::AABB_face_graph_triangle_primitive<Surface_mesh> Primitive;
-  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
+  CGAL::AABB_tree<CGAL::Symmetry_transform::internal::AABB_traits_3<K, Primitive>> tree(faces(mesh).first, faces(mesh).second, mesh);
   tree.accelerate_distance_queries();
   double same = 0., total = 0.;
   for(auto f : faces(mesh)) {

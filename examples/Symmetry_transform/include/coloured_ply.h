@@ -55,7 +55,7 @@ void add_plane_square(CGAL::Surface_mesh<Point>& mesh, const Plane& plane, const
   v = v * (size / 2. / std::sqrt(v.squared_length()));
   const typename Mesh::Vertex_index a = mesh.add_vertex(o - u - v), b = mesh.add_vertex(o + u - v),
                                     c = mesh.add_vertex(o + u + v), d = mesh.add_vertex(o - u + v);
-  auto face_colour = mesh.template property_map<typename Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  auto face_colour = mesh.template add_property_map<typename Mesh::Face_index, CGAL::IO::Color>("f:color").first;
   for(typename Mesh::Face_index f : {mesh.add_face(a, b, c), mesh.add_face(a, c, d)}) face_colour[f] = colour;
 }
 
@@ -78,7 +78,7 @@ void add_axis_cylinder(CGAL::Surface_mesh<Point>& mesh, const Line& axis, double
       ring[end][i] =
         mesh.add_vertex(axis.point() + (end ? half_length : -half_length) * d + radius * (std::cos(a) * u + std::sin(a) * v));
     }
-  auto face_colour = mesh.template property_map<typename Mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  auto face_colour = mesh.template add_property_map<typename Mesh::Face_index, CGAL::IO::Color>("f:color").first;
   for(int i = 0; i < sides; ++i) {
     const int j = (i + 1) % sides;
     face_colour[mesh.add_face(ring[0][i], ring[0][j], ring[1][j])] = colour;

@@ -9,7 +9,8 @@
 #include <CGAL/Symmetry_transform/Rotational_symmetry.h>
 #include <CGAL/number_utils.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>

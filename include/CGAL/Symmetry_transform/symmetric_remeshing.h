@@ -92,7 +92,7 @@ bool symmetric_remeshing(const TriangleMesh& tm, const PlaneRange& planes, const
  *
  * \cgalNamedParamsBegin{Approximation Named Parameters}
  *   \cgalParamNBegin{seeding_method}
- *     \cgalParamDescription{the seeding, as in \cgal's VSA}
+ *     \cgalParamDescription{the seeding, as in \cgal's VSA (a program that names it includes `CGAL/Variational_shape_approximation.h`, which this package does not include)}
  *     \cgalParamType{`CGAL::Surface_mesh_approximation::Seeding_method`}
  *     \cgalParamDefault{`CGAL::Surface_mesh_approximation::HIERARCHICAL`}
  *   \cgalParamNEnd

@@ -13,7 +13,8 @@
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <utility>

@@ -23,12 +23,29 @@ inline unsigned default_number_of_threads()
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
+// A reference to a loop body body(thread, begin, end) of any type: the loops below are compiled
+// once for all their callers, which only add the call through a function pointer (one per slice).
+class Slice_body
+{
+public:
+  template <typename Body>
+  Slice_body(const Body& body)
+    : body_(&body), call_([](const void* b, unsigned thread, std::size_t begin, std::size_t end) {
+        (*static_cast<const Body*>(b))(thread, begin, end);
+      })
+  {}
+  void operator()(unsigned thread, std::size_t begin, std::size_t end) const { call_(body_, thread, begin, end); }
+
+private:
+  const void* body_;
+  void (*call_)(const void*, unsigned, std::size_t, std::size_t);
+};
+
 // parallel_for() under a Progress: the workers see it (parallel_step(), stop_requested()); the
 // caller, which runs no slice, calls the callback while it waits if it is the owner (a
 // parallel_for() nested in a worker only waits), then throws Operation_cancelled if the work was
 // cancelled. The slices are those of parallel_for().
-template <typename Body>
-void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned threads, const Body& body)
+inline void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned threads, Slice_body body)
 {
   Parallel_progress loop;
   loop.count = count;
@@ -81,8 +98,7 @@ void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned 
 // when the pool is busy. The first exception thrown by a body
 // is rethrown in the caller, once every slice is done. Under a callback (progress.h), bodies
 // call parallel_step() after each item, or test stop_requested(), and return when cancelled.
-template <typename Body>
-void parallel_for(std::size_t count, unsigned threads, const Body& body)
+inline void parallel_for(std::size_t count, unsigned threads, Slice_body body)
 {
   threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
   if(active_progress != nullptr)

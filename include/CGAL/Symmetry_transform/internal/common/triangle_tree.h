@@ -11,9 +11,7 @@
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Symmetry_transform/internal/common/cgal_aabb.h>
 
 #include <Eigen/Core>
 
@@ -53,11 +51,11 @@ inline Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const
   return a + (vb / denominator) * ab + (vc / denominator) * ac;
 }
 
-typedef CGAL::AABB_triangle_primitive<Dkernel, std::vector<Dtriangle>::const_iterator> Triangle_primitive;
+typedef AABB_triangle_primitive_3<Dkernel, std::vector<Dtriangle>::const_iterator> Triangle_primitive;
 
 // CGAL's AABB traits of triangles, with the closest point of a triangle by
 // closest_point_on_triangle().
-class Triangle_tree_traits : public CGAL::AABB_traits<Dkernel, Triangle_primitive>
+class Triangle_tree_traits : public AABB_traits_3<Dkernel, Triangle_primitive>
 {
 public:
   struct Closest_point

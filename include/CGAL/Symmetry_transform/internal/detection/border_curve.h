@@ -19,10 +19,12 @@
 //   the border, from both sides, it is exact (mirror_refined_on_border()).
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/small_matrices.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
 #include <CGAL/number_type_config.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -154,8 +156,8 @@ bool fit_to_border(double sigma, Sums sums, Apply apply)
   for(double width : border_fit_widths)
     for(unsigned i = 0; i < border_fit_iterations; ++i) {
       const auto [jtj, jtr] = sums(width * sigma);
-      const Eigen::Vector2d step = jtj.ldlt().solve(-jtr);
-      if(!step.allFinite() || !(jtj.determinant() > 0.)) return false;
+      const Eigen::Vector2d step = solve_symmetric<2>(jtj, -jtr);
+      if(!step.allFinite() || !(jtj(0, 0) * jtj(1, 1) - jtj(0, 1) * jtj(1, 0) > 0.)) return false;
       if(apply(step) < border_fit_settled_step) break;
     }
   return true;

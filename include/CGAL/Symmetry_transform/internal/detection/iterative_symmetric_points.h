@@ -20,11 +20,13 @@
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/small_matrices.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
 #include <CGAL/Symmetry_transform/internal/detection/border_curve.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +92,7 @@ inline bool degenerate_fit(const Eigen::Matrix3d& jtj, double radius)
 {
   const Eigen::DiagonalMatrix<double, 3> scale(1. / radius, 1. / radius, 1.); // the turns carry a length
   const Eigen::Matrix3d scaled = scale * jtj * scale;
-  const Eigen::Vector3d eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scaled, Eigen::EigenvaluesOnly).eigenvalues();
+  const Eigen::Vector3d eigenvalues = symmetric_eigen(scaled).values;
   return eigenvalues[0] <= degenerate_fit_ratio * eigenvalues[2];
 }
 
@@ -243,8 +245,8 @@ template <typename Matcher>
 bool refit(const Isp_sums& s, Dplane& plane, double step_factor = 1.)
 {
   if(s.weight <= 0.) return false;
-  if(Matcher::has_normals) {
-    const Eigen::Vector3d delta = step_factor * s.jtj.ldlt().solve(-s.jtr);
+  if constexpr(Matcher::has_normals) {
+    const Eigen::Vector3d delta = step_factor * solve_symmetric<3>(s.jtj, -s.jtr);
     if(!delta.allFinite()) return false;
     const Eigen::Vector3d t1 = plane.normal.unitOrthogonal(), t2 = plane.normal.cross(t1);
     plane.normal = (plane.normal + delta[0] * t1 + delta[1] * t2).normalized();
@@ -253,8 +255,7 @@ bool refit(const Isp_sums& s, Dplane& plane, double step_factor = 1.)
     // Minimise sum w (4 (n.m - d)^2 - (n.u)^2): d = n.mean(m), n the eigenvector of the
     // smallest eigenvalue of 4 C_m - C_u (moments centred on the weighted mean midpoint).
     const Eigen::Vector3d mean = s.midpoint_sum / s.weight;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(s.moments - 4. * s.weight * mean * mean.transpose());
-    Eigen::Vector3d normal = solver.eigenvectors().col(0);
+    Eigen::Vector3d normal = symmetric_eigen(s.moments - 4. * s.weight * mean * mean.transpose()).vectors.col(0);
     if(normal.dot(plane.normal) < 0.) normal = -normal;
     const double offset = normal.dot(mean);
     const Eigen::Vector3d relaxed = plane.normal + step_factor * (normal - plane.normal);

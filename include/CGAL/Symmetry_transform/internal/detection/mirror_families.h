@@ -16,7 +16,8 @@
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>

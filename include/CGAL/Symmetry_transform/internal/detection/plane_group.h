@@ -14,7 +14,8 @@
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>

@@ -131,8 +131,8 @@ inline void seed_proxies(Symmetric_partition& partition)
   }
   bootstrap(partition);
   if(partition.proxies().size() >= max_proxies) return;
-  if(settings.seeding == Surface_mesh_approximation::RANDOM) seed_random(partition, max_proxies);
-  else if(settings.seeding == Surface_mesh_approximation::INCREMENTAL) seed_incremental(partition, max_proxies, min_drop);
+  if(settings.seeding == Seeding::random) seed_random(partition, max_proxies);
+  else if(settings.seeding == Seeding::incremental) seed_incremental(partition, max_proxies, min_drop);
   else seed_hierarchical(partition, max_proxies, min_drop);
 }
 

@@ -15,8 +15,6 @@
 #include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 
-#include <CGAL/Variational_shape_approximation.h>
-
 #include <cstddef>
 #include <stdexcept>
 #include <vector>
@@ -25,6 +23,11 @@ namespace CGAL::Symmetry_transform::internal {
 
 // The planes a vertex lies on, and those a face has a mirror through, are bits of a std::uint64_t.
 constexpr std::size_t max_number_of_mirror_planes = 64;
+
+// CGAL::Surface_mesh_approximation::Seeding_method by its values (RANDOM, INCREMENTAL,
+// HIERARCHICAL): its header, Variational_shape_approximation.h, would cost every program that
+// remeshes the compilation of CGAL's whole VSA (Boost graph, least-squares fitting).
+enum class Seeding : int { random = 0, incremental = 1, hierarchical = 2 };
 
 struct Remeshing_settings
 {
@@ -35,7 +38,7 @@ struct Remeshing_settings
   double min_error_drop = 0.;            // 0: not given
   std::size_t number_of_iterations = defaults::remeshing_iterations;
   std::size_t number_of_relaxations = defaults::remeshing_relaxations;
-  Surface_mesh_approximation::Seeding_method seeding = Surface_mesh_approximation::HIERARCHICAL;
+  Seeding seeding = Seeding::hierarchical;
   unsigned random_seed = defaults::random_seed;
   unsigned threads = 1;
   bool verbose = false;
@@ -66,7 +69,7 @@ Remeshing_settings remeshing_settings(const PlaneRange& planes, const NamedParam
   s.number_of_iterations = read_count(np, internal_np::number_of_iterations, defaults::remeshing_iterations, r::number_of_iterations);
   s.number_of_relaxations =
     read_count(np, internal_np::number_of_relaxations, defaults::remeshing_relaxations, r::number_of_relaxations);
-  s.seeding = choose_parameter(get_parameter(np, internal_np::seeding_method), Surface_mesh_approximation::HIERARCHICAL);
+  s.seeding = Seeding(static_cast<int>(choose_parameter(get_parameter(np, internal_np::seeding_method), int(Seeding::hierarchical))));
   s.position_weight = read_real(np, internal_np::st_position_weight, defaults::position_weight, r::position_weight);
   s.strongest_plane_only = choose_parameter(get_parameter(np, internal_np::st_strongest_plane_only), false);
   s.random_seed = read_random_seed(np, defaults::random_seed);

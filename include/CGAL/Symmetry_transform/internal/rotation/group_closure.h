@@ -19,7 +19,8 @@
 #include <CGAL/Symmetry_transform/internal/rotation/candidate_axes.h>
 #include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>

@@ -16,7 +16,8 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/property_map.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>

@@ -18,7 +18,8 @@
 #include <CGAL/boost/graph/Alpha_expansion_MaxFlow_tag.h>
 #include <CGAL/boost/graph/alpha_expansion_graphcut.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <cstddef>

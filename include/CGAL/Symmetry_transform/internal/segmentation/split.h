@@ -20,7 +20,8 @@
 #include <CGAL/Symmetry_transform/internal/segmentation/fuzzy_clustering.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/settings.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <chrono>

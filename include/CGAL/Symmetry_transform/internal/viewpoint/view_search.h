@@ -15,7 +15,8 @@
 
 #include <CGAL/number_type_config.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>

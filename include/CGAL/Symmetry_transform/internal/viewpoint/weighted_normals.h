@@ -13,7 +13,8 @@
 
 #include <CGAL/number_utils.h>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <cstddef>
