@@ -9,7 +9,9 @@
 #define SYMMETRY_TRANSFORM_BENCHMARK_UTILITIES_H
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -62,6 +64,28 @@ inline std::vector<std::string> all_sample_meshes()
     if(entry.path().extension() == ".off") names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
+}
+
+// Prints "program: message" and the program's usage (its options after its name) on std::cerr,
+// then exits with status 2.
+[[noreturn]] inline void fail_with_usage(const char* program, const char* usage_options, const std::string& message)
+{
+  std::cerr << program << ": " << message << "\nusage: " << program << usage_options;
+  std::exit(2);
+}
+
+// The value of `option` as a positive integer (or non-negative if `zero_allowed`); fails with
+// the usage otherwise.
+inline unsigned natural_option(const char* program, const char* usage_options, const std::string& option,
+                               const std::string& value, bool zero_allowed)
+{
+  std::size_t end = 0;
+  long v = 0;
+  try { v = std::stol(value, &end); } catch(const std::exception&) { end = 0; }
+  if(end != value.size() || v < (zero_allowed ? 0 : 1))
+    fail_with_usage(program, usage_options,
+                    option + " needs a " + (zero_allowed ? "non-negative" : "positive") + " integer, not '" + value + "'");
+  return unsigned(v);
 }
 
 } // namespace benchmark_utilities

@@ -115,18 +115,12 @@ const char* const usage_options = " --peer PATH/ShapeSymmetry [--set demo|psb] [
 
 [[noreturn]] void fail(const char* program, const std::string& message)
 {
-  std::cerr << program << ": " << message << "\nusage: " << program << usage_options;
-  std::exit(2);
+  benchmark_utilities::fail_with_usage(program, usage_options, message);
 }
 
 unsigned natural(const char* program, const std::string& option, const std::string& value, bool zero_allowed)
 {
-  std::size_t end = 0;
-  long v = 0;
-  try { v = std::stol(value, &end); } catch(const std::exception&) { end = 0; }
-  if(end != value.size() || v < (zero_allowed ? 0 : 1))
-    fail(program, option + " needs a " + (zero_allowed ? "non-negative" : "positive") + " integer, not '" + value + "'");
-  return unsigned(v);
+  return benchmark_utilities::natural_option(program, usage_options, option, value, zero_allowed);
 }
 
 struct Options
