@@ -20,7 +20,7 @@
 // The symmetry frame is computed by the rule of symmetry_frame() (greedy), by that of its
 // partial_data(true) (joint_var_prior_inertia) and, for comparison, by the other rules of
 // internal/alignment/joint_frame.h (--rules), and by the rules `full*` of this program (the three
-// orthogonal planes searched in the whole transform, RESULTS.md, seventh session), all from one detection of the
+// orthogonal planes searched in the whole transform; RESULTS.md, "Alignment"), all from one detection of the
 // principal symmetries per scan and per whole shape (cached in --cache DIR if given, so that
 // rules are compared without detecting again). Prints, per rule, a row per shape, the
 // histograms of both errors, the fraction of scans whose centre of symmetry is closer to its
@@ -244,7 +244,7 @@ Rule rule_of(bool joint, bool support_weighted, bool least_squares_center, bool 
 
 // `rule` (one whose centre does not switch on blend_only_when_weak) with every plane searched in
 // the transform, which no principal symmetry holds, moved through the centre of mass: along its
-// normal the centre is then the centre of mass's (RESULTS.md, issue 15, sixth session).
+// normal the centre is then the centre of mass's (RESULTS.md, "Alignment").
 Rule with_searched_through_mass(const STI::Frame_rule& rule)
 {
   return [rule](const STI::Mass_distribution& mass, const Detection& d) {
@@ -264,7 +264,7 @@ Rule with_searched_through_mass(const STI::Frame_rule& rule)
 // The thesis's suggested search (section 4.1.4): the three mutually orthogonal planes of the
 // whole transform that hold the most symmetry together (internal/alignment/orthogonal_planes.h).
 
-// How a full-search frame is finished (RESULTS.md, seventh session).
+// How a full-search frame is finished (RESULTS.md, "Alignment").
 struct Full_search
 {
   bool variance_order = true;  // axes by the variance of the mass, not by the planes' values
@@ -382,8 +382,8 @@ Rule full_search(bool variance_order, double mass_prior, Full_search options = {
   return full_search(options);
 }
 
-// The library's rule for partial data until the eighth session (symmetry_frame(..., partial_data(true))
-// took these axes and this centre).
+// A rule for partial data compared with the library's (the axes of the joint variance with the
+// prior of inertia, and this centre).
 const STI::Frame_rule joint_var_prior_inertia{true, false, true, false, false, 1, 0.2, 1., false};
 
 // symmetry_frame(..., partial_data(true)): the axes of the joint rule, the centre of the

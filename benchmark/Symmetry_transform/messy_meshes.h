@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Hard inputs for the detection (issue 14): a clean mesh made messy in code, as real files are.
+// Hard inputs for the detection: a clean mesh made messy in code, as real files are.
 // Each variant is a triangle soup (every face with its own three corners, hence one component
 // per face, as a soup read without repair), built from the mesh's triangles:
 //   - components: the mesh plus `count` small tetrahedra scattered in its bounding box;

@@ -3,7 +3,7 @@
 // Author(s): The CGAL Symmetry_transform developers
 //
 // Every algorithm of the package on a mesh of about 1.2 million faces, side by side with CGAL's
-// Variational Shape Approximation and SDF segmentation on the same mesh (issue 14). The mesh is
+// Variational Shape Approximation and SDF segmentation on the same mesh. The mesh is
 // built in code: bunny00.off (75,408 faces) refined by --levels rounds of Loop subdivision, each
 // of which multiplies the face count by 4 (two rounds: 1,206,528 faces).
 //

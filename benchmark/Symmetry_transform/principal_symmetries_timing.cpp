@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): The CGAL Symmetry_transform developers
 //
-// Time of detect_principal_symmetries() and its split into stages (issue 3).
+// Time of detect_principal_symmetries() and its split into stages.
 //
 // For each mesh, with the default parameters except grid_resolution, each timed alone (wall
 // clock, median of --repeats runs, default number_of_threads = hardware_concurrency):
@@ -32,7 +32,7 @@
 // with a '/' is a path; `--meshes all` is every .off file there. --seed sets the random axes of
 // the perturbed starting planes.
 //
-// --summary 1 (issue 14) prints instead one row per mesh: faces, the processor time (std::clock,
+// --summary 1 prints instead one row per mesh: faces, the processor time (std::clock,
 // all threads) and wall time of detect_principal_symmetries (median of --repeats), the stages
 // (with --stages 1), the candidates refined and the longest single ISP refinement (wall time, as
 // verbose(true) prints it, during the ISP stage; during the detection itself with --stages 0),

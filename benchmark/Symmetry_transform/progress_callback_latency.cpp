@@ -11,7 +11,7 @@
 //   progress_callback_latency [--mesh FILE] [--loop K] [--functions detection,remeshing,segmentation]
 //                             [--threads 2] [--repeats 2] [--single none|true]
 //
-// --loop K Loop-subdivides the mesh K times first (bunny00.off twice: 1.2M faces, as issue 14).
+// --loop K Loop-subdivides the mesh K times first (bunny00.off twice: 1.2M faces).
 // --single runs each function once, without a callback or with one that returns true, and
 // stops: for instruction counts (valgrind --tool=callgrind), which the load of a shared
 // machine does not disturb.

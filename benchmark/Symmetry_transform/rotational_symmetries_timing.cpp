@@ -3,7 +3,7 @@
 // Author(s): The CGAL Symmetry_transform developers
 //
 // Time of detect_rotational_symmetries() against detect_principal_symmetries() on the same mesh,
-// in the same run, and the axes found (issue 17).
+// in the same run, and the axes found.
 //
 // For each mesh, with the default parameters except grid_resolution and random_seed, the two
 // detections are run alternately --repeats times; each call is timed by the wall clock and by

@@ -64,7 +64,7 @@ const char* default_meshes = "bull.off,cow.off,camel.off,dino.off,elephant.off,t
                              "lion.off,bear.off,armadillo.off,man.off,mannequin-devil.off,diplodocus.off,"
                              "couplingdown.off,fandisk.off,rotor_small.off,elk.off,pig.off,helmet.off,"
                              "mushroom.off,spool.off,anchor.off";
-// The thesis's "20-35 degrees off-axis", and the band of issue 15, 5 degrees wider on each side.
+// The thesis's "20-35 degrees off-axis"; the experiment also counts a band 5 degrees wider on each side.
 const double thesis_least_off_axis = 20., thesis_most_off_axis = 35.;
 const double least_off_axis = 15., most_off_axis = 40.;
 // The columns' near-duplicate normals (within this angle of a stronger one's, as lines) and

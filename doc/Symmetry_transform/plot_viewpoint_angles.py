@@ -12,7 +12,7 @@ usage (Debian's python3 with python3-matplotlib):
 TABLE is the standard output of `viewpoint_experiment --set ...`; the column read is the one of
 the planes as detect_principal_symmetries() returns them. Writes
 doc/Symmetry_transform/fig/viewpoint_angles.png, the band of the thesis's "20-35 degrees
-off-axis" (section 4.3.3) and the 15-40 degrees of issue 15 shaded.
+off-axis" (section 4.3.3) and the 15-40 degrees band, 5 degrees wider on each side, shaded.
 """
 
 import os
@@ -26,7 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 FIG = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fig", "viewpoint_angles.png")
 COLUMN = "best view's angle to the nearest frame axis (deg)"
-ISSUE_BAND = (15, 40)  # degrees: issue 15's band, 5 degrees wider on each side than the thesis's
+WIDER_BAND = (15, 40)  # degrees: 5 degrees wider on each side than the thesis's
 THESIS_BAND = (20, 35)  # degrees: "the best viewpoint ... was always 20-35 degrees off-axis"
 BIN_DEGREES = 5
 MOST_DEGREES = 60  # the largest angle to the nearest of three orthogonal axes is 54.7 degrees
@@ -61,10 +61,10 @@ def main(arguments):
     edges = list(range(0, MOST_DEGREES + BIN_DEGREES, BIN_DEGREES))
     fig, axes = plt.subplots(1, len(sets), figsize=(4.2 * len(sets), 3.2), sharey=True, squeeze=False)
     for ax, (label, (values, inside)) in zip(axes[0], sets):
-        ax.axvspan(*ISSUE_BAND, color="tab:green", alpha=0.12, label="%d-%d deg (issue 15)" % ISSUE_BAND)
+        ax.axvspan(*WIDER_BAND, color="tab:green", alpha=0.12, label="%d-%d deg" % WIDER_BAND)
         ax.axvspan(*THESIS_BAND, color="tab:green", alpha=0.18, label="%d-%d deg (thesis)" % THESIS_BAND)
         ax.hist(values, bins=edges, weights=[1 / len(values)] * len(values), color="tab:blue", edgecolor="white")
-        ax.set_title("%s: %d of %d in %d-%d deg" % ((label, inside, len(values)) + ISSUE_BAND), fontsize=10)
+        ax.set_title("%s: %d of %d in %d-%d deg" % ((label, inside, len(values)) + WIDER_BAND), fontsize=10)
         ax.set_xlabel("best view to nearest frame axis (deg)")
         ax.set_xlim(0, MOST_DEGREES)
     axes[0][0].set_ylabel("fraction of the shapes")

@@ -62,7 +62,7 @@ def build_examples(build_dir):
            stdout=subprocess.DEVNULL)
     rf.run(["cmake", "--build", build_dir, "--target", "align_to_symmetry_frame", "best_viewpoint",
             "-j", str(os.cpu_count() or 2)])
-    return os.path.join(build_dir, "examples", "Symmetry_transform"), data_dir
+    return os.path.join(build_dir, "demo", "Symmetry_transform"), data_dir
 
 
 def output_of(command):

@@ -38,7 +38,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 FIG_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fig")
 
 # 1 - Rand Index over the whole benchmark as the benchmark's paper (Chen et al. 2009) reports it,
-# quoted second-hand in issue 16 (not checked against the paper).
+# quoted second-hand (not checked against the paper).
 LITERATURE = [("humans (paper)", 0.10, ":"), ("randomized cuts (paper)", 0.15, "--"),
               ("shape diameter (paper)", 0.175, "-.")]
 COLOURS = {"Human": "#bbbbbb", "Symmetry": "#f4a582", "variant": "#d62728", "SDF k": "#1f77b4", "SDF 5": "#8fbce6"}

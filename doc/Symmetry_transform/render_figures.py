@@ -65,7 +65,7 @@ def build_example(build_dir):
          "-DSYMMETRY_TRANSFORM_BUILD_EXAMPLES=ON", "-DSYMMETRY_TRANSFORM_DATA_DIR=" + data_dir],
         stdout=subprocess.DEVNULL)
     run(["cmake", "--build", build_dir, "--target", "principal_symmetries", "-j", str(os.cpu_count() or 2)])
-    return os.path.join(build_dir, "examples", "Symmetry_transform", "principal_symmetries"), data_dir
+    return os.path.join(build_dir, "demo", "Symmetry_transform", "principal_symmetries"), data_dir
 
 
 def ply_comments(path):

@@ -50,7 +50,7 @@ def build_example(build_dir):
     """Configures DIR and unpacks the data as render_figures.py does, then builds symmetric_remeshing."""
     _, data_dir = rf.build_example(build_dir)
     rf.run(["cmake", "--build", build_dir, "--target", "symmetric_remeshing", "-j", str(os.cpu_count() or 2)])
-    return os.path.join(build_dir, "examples", "Symmetry_transform", "symmetric_remeshing"), data_dir
+    return os.path.join(build_dir, "demo", "Symmetry_transform", "symmetric_remeshing"), data_dir
 
 
 def parse_run(out):

@@ -50,7 +50,7 @@ def build_example(build_dir):
     """Configures DIR and unpacks the data as render_figures.py does, then builds rotational_symmetries."""
     _, data_dir = rf.build_example(build_dir)
     rf.run(["cmake", "--build", build_dir, "--target", "rotational_symmetries", "-j", str(os.cpu_count() or 2)])
-    return os.path.join(build_dir, "examples", "Symmetry_transform", "rotational_symmetries"), data_dir
+    return os.path.join(build_dir, "demo", "Symmetry_transform", "rotational_symmetries"), data_dir
 
 
 def caption(path):

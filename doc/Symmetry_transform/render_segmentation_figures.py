@@ -50,7 +50,7 @@ def build_example(build_dir):
     """Configures DIR and unpacks the data as render_figures.py does, then builds symmetry_segmentation."""
     _, data_dir = rf.build_example(build_dir)
     rf.run(["cmake", "--build", build_dir, "--target", "symmetry_segmentation", "-j", str(os.cpu_count() or 2)])
-    return os.path.join(build_dir, "examples", "Symmetry_transform", "symmetry_segmentation"), data_dir
+    return os.path.join(build_dir, "demo", "Symmetry_transform", "symmetry_segmentation"), data_dir
 
 
 def parse_run(out):

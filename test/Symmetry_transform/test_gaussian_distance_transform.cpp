@@ -112,7 +112,7 @@ std::vector<char> band_by_definition(const Grid& grid, const std::vector<CGAL::S
 }
 
 // The band is marked by rows and by layers in parallel, and the detection hands the GEDT its
-// matcher's tree (issue 14): the band is that of the definition, and the grid and the closest
+// matcher's tree: the band is that of the definition, and the grid and the closest
 // triangle of each voxel are those of one thread and of a tree of the GEDT's own, to the bit;
 // also far from the origin, where the rounding of the coordinates is larger.
 TEST(GaussianDistanceTransform, BandGridAndClosestTrianglesDoNotDependOnThreadsOrOnWhoseTreeIsUsed)

@@ -172,7 +172,7 @@ std::vector<std::pair<std::string, Shape<Surface_mesh>>> symmetric_shapes()
 // Accuracy on shapes symmetric by construction
 // ------------------------------------------------------------------------------------------
 
-// The target: 0.1 degree and 0.1 % of the radius, under three random similarities per
+// The accuracy promised: 0.1 degree and 0.1 % of the radius, under three random similarities per
 // shape. Measured: see the printed worst case (a few thousandths of a degree).
 void expect_strongest_plane_exact(const std::string& name, const Shape<Surface_mesh>& shape, unsigned seed)
 {
@@ -211,7 +211,7 @@ TEST(PrincipalSymmetries, StrongestPlaneOfOnePlaneHullIsTrueUnderRandomMotions)
 }
 
 // Gaussian noise of standard deviation 0.2 % of the radius on every vertex coordinate: within
-// 1 degree and 1 % of the radius (the target), two random similarities per shape.
+// 1 degree and 1 % of the radius (the accuracy promised), two random similarities per shape.
 TEST(PrincipalSymmetries, StrongestPlaneSurvivesGaussianVertexNoise)
 {
   CGAL::Random rng(204);

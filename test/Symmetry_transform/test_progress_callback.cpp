@@ -5,7 +5,7 @@
 // CGAL's `callback` named parameter on the long functions: the progress rises from 0 to 1, a
 // callback that always returns true changes no result, and a callback that returns false stops
 // detection, remeshing and segmentation within 0.2 s with their documented results (the one
-// wall-clock assertion of the suites, asked by issue 14; the latencies measured are milliseconds).
+// wall-clock assertion of the suites, a bound users rely on; the latencies measured are milliseconds).
 
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/point_symmetry_transform.h>
@@ -41,7 +41,7 @@ typedef ST::Principal_symmetry<K> Symmetry;
 typedef std::chrono::steady_clock Clock;
 
 const auto grid_32 = CGAL::parameters::grid_resolution(32).random_seed(1);
-// The one timing bound of the suites (issue 14): a cancel takes effect within 0.2 s.
+// The one timing bound of the suites: a cancel takes effect within 0.2 s.
 constexpr double max_cancel_latency_seconds = 0.2;
 
 // Records the values passed to the callback; returns false from the first value at or above

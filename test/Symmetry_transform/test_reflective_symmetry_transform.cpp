@@ -266,9 +266,9 @@ TEST(ReflectiveSymmetryTransform, ExactMethodAgreesWithBruteForceOnTinyGrid)
   EXPECT_LE(rms, 0.003);
 }
 
-// The target: relative L2 error below 2% at 64^3 with 2e6 samples (the default
+// The accuracy promised: relative L2 error below 2% at 64^3 with 2e6 samples (the default
 // STRATIFIED_LINES estimator). The only 64^3 exact transform of the suites (~10-30 s).
-// The target: relative L2 error below 2% at 64^3 with 2e6 samples. It holds on the
+// The accuracy promised: relative L2 error below 2% at 64^3 with 2e6 samples. It holds on the
 // thesis's transform value sqrt((1 + SM) / 2), on which the thesis measured its 1% noise.
 // On SM itself the noise at 2e6 samples is 3% (it falls as 1/sqrt(samples)); 4e6 samples
 // bring it below 2%. Measured (seed 108): SM 3.03% / 1.63%, transform value 0.29% / 0.16%.

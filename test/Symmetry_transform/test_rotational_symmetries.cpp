@@ -120,7 +120,7 @@ Axis_error expect_single_axis(const std::string& what, Surface_mesh mesh, int k,
 // k-fold shapes, exact
 // ------------------------------------------------------------------------------------------
 
-// The target: 0.1 degree and 0.1 % of the radius, the order exact, one axis only.
+// The accuracy promised: 0.1 degree and 0.1 % of the radius, the order exact, one axis only.
 void expect_exact_axes(const std::string& family, double twist_degrees, unsigned seed)
 {
   CGAL::Random rng(seed);

@@ -6,6 +6,7 @@
 #define CGAL_SYMMETRY_TRANSFORM_GAUSSIAN_DISTANCE_TRANSFORM_H
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/grid/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
@@ -129,7 +130,7 @@ gaussian_distance_transform(const TriangleMesh& tm,
 */
 template <typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
-Voxel_grid<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Voxel_grid<Geom_traits_of_points<PointRange, NamedParameters>>
 gaussian_distance_transform_of_points(const PointRange& points,
                                       const NamedParameters& np = parameters::default_values())
 {
@@ -176,11 +177,11 @@ gaussian_distance_transform_of_points(const PointRange& points,
 */
 template <typename PointRange, typename TriangleRange,
           typename NamedParameters = parameters::Default_named_parameters>
-Voxel_grid<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Voxel_grid<Geom_traits_of_points<PointRange, NamedParameters>>
 gaussian_distance_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                              const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::cancellable_gaussian_distance_transform_of<GT>(
     internal::without_progress([&] { return internal::triangles_of_soup(points, triangles, np); }), np);
 }

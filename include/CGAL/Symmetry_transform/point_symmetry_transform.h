@@ -9,7 +9,7 @@
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/common/fft.h>
 #include <CGAL/Symmetry_transform/internal/grid/settings.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 
@@ -220,7 +220,7 @@ Point_symmetry_transform<GeomTraits> point_symmetry_transform(const Voxel_grid<G
  * \throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-Point_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
+Point_symmetry_transform<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>
 point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
   return internal::with_progress_scope(np, [&] { return point_symmetry_transform(gaussian_distance_transform(tm, np), np); });
@@ -252,7 +252,7 @@ point_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = par
  * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
-Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Point_symmetry_transform<Geom_traits_of_points<PointRange, NamedParameters>>
 point_symmetry_transform_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   return internal::with_progress_scope(
@@ -286,7 +286,7 @@ point_symmetry_transform_of_points(const PointRange& points, const NamedParamete
  * \throws std::invalid_argument as `gaussian_distance_transform_of_triangle_soup()` and the overload on grids.
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
-Point_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Point_symmetry_transform<Geom_traits_of_points<PointRange, NamedParameters>>
 point_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                           const NamedParameters& np = parameters::default_values())
 {

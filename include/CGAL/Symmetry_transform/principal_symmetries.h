@@ -8,7 +8,7 @@
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
@@ -59,13 +59,13 @@ namespace CGAL::Symmetry_transform {
  * a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
+std::vector<Principal_symmetry<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>>
 principal_symmetries(
   const TriangleMesh& tm,
-  const Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>& prst,
+  const Reflective_symmetry_transform<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>& prst,
   const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::with_progress(np, [&] {
     const double surface_share = internal::progress_shares::detection_surface_share(num_faces(tm));
     internal::Progress_stage stage(0., surface_share);
@@ -113,10 +113,10 @@ principal_symmetries(
  * `reflective_symmetry_transform()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
+std::vector<Principal_symmetry<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>>
 detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::with_progress(np, [&] { return internal::detection_of_mesh(tm, np).symmetries; },
                                  [] { return std::vector<Principal_symmetry<GT>>(); });
 }
@@ -161,10 +161,10 @@ detect_principal_symmetries(const TriangleMesh& tm, const NamedParameters& np = 
  * and `reflective_symmetry_transform()`, a NaN or infinite normal, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
+std::vector<Principal_symmetry<Geom_traits_of_points<PointRange, NamedParameters>>>
 detect_principal_symmetries_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::with_progress(np, [&] { return internal::detection_of_points(points, np).symmetries; },
                                  [] { return std::vector<Principal_symmetry<GT>>(); });
 }
@@ -225,12 +225,12 @@ typename GT::Plane_3 refined_plane(std::vector<Dtriangle> triangles, const typen
  * `gaussian_distance_transform()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3
+typename Geom_traits_of_mesh<TriangleMesh, NamedParameters>::Plane_3
 refine_symmetry_plane(const TriangleMesh& tm,
-                      const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3& plane,
+                      const typename Geom_traits_of_mesh<TriangleMesh, NamedParameters>::Plane_3& plane,
                       const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::refined_plane<GT>(internal::triangles_of_mesh(tm, np), plane, np);
 }
 
@@ -265,7 +265,7 @@ refine_symmetry_plane(const TriangleMesh& tm,
 template <typename TriangleMesh, typename FaceSupportMap,
           typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_support(const TriangleMesh& tm,
-                        const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3& plane,
+                        const typename Geom_traits_of_mesh<TriangleMesh, NamedParameters>::Plane_3& plane,
                         FaceSupportMap face_support_map, const NamedParameters& np = parameters::default_values())
 {
   const auto vpm = internal::vertex_point_map(tm, np);
@@ -323,11 +323,11 @@ double symmetry_support(const TriangleMesh& tm,
  * and `reflective_symmetry_transform()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Principal_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
+std::vector<Principal_symmetry<Geom_traits_of_points<PointRange, NamedParameters>>>
 detect_principal_symmetries_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                              const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::with_progress(np, [&] { return internal::detection_of_triangle_soup(points, triangles, np).symmetries; },
                                  [] { return std::vector<Principal_symmetry<GT>>(); });
 }
@@ -364,13 +364,13 @@ detect_principal_symmetries_of_triangle_soup(const PointRange& points, const Tri
  * `gaussian_distance_transform_of_triangle_soup()`, or if a numeric named parameter lies out of its range (the message names it and the range).
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
-typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3
+typename Geom_traits_of_points<PointRange, NamedParameters>::Plane_3
 refine_symmetry_plane_of_triangle_soup(
   const PointRange& points, const TriangleRange& triangles,
-  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  const typename Geom_traits_of_points<PointRange, NamedParameters>::Plane_3& plane,
   const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::refined_plane<GT>(internal::triangles_of_soup(points, triangles, np), plane, np);
 }
 
@@ -408,7 +408,7 @@ template <typename PointRange, typename TriangleRange, typename OutputIterator,
           typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_support_of_triangle_soup(
   const PointRange& points, const TriangleRange& triangles,
-  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  const typename Geom_traits_of_points<PointRange, NamedParameters>::Plane_3& plane,
   OutputIterator supports, const NamedParameters& np = parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;

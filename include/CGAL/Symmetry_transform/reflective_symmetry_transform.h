@@ -8,7 +8,7 @@
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
@@ -439,7 +439,7 @@ reflective_symmetry_transform(const Voxel_grid<GeomTraits>& f, const NamedParame
  * \throws std::invalid_argument as `gaussian_distance_transform()` and the overload on grids.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-Reflective_symmetry_transform<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
+Reflective_symmetry_transform<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>
 reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
   return internal::reflective_symmetry_transform_of_gedt([&] { return gaussian_distance_transform(tm, np); }, np);
@@ -476,7 +476,7 @@ reflective_symmetry_transform(const TriangleMesh& tm, const NamedParameters& np 
  * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and the overload on grids.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
-Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Reflective_symmetry_transform<Geom_traits_of_points<PointRange, NamedParameters>>
 reflective_symmetry_transform_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   return internal::reflective_symmetry_transform_of_gedt([&] { return gaussian_distance_transform_of_points(points, np); }, np);
@@ -514,7 +514,7 @@ reflective_symmetry_transform_of_points(const PointRange& points, const NamedPar
  * \throws std::invalid_argument as `gaussian_distance_transform_of_triangle_soup()` and the overload on grids.
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
-Reflective_symmetry_transform<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Reflective_symmetry_transform<Geom_traits_of_points<PointRange, NamedParameters>>
 reflective_symmetry_transform_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                                const NamedParameters& np = parameters::default_values())
 {

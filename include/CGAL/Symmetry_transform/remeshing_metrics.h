@@ -9,7 +9,7 @@
 // mirror image (symmetry error), both from area-uniform seeded samples and exact closest points
 // (CGAL::AABB_tree).
 
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/sampled_distances.h>
@@ -125,7 +125,7 @@ Approximation_error approximation_error(const TriangleMesh1& tm1, const Triangle
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_error(const TriangleMesh& tm,
-                      const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3& plane,
+                      const typename Geom_traits_of_mesh<TriangleMesh, NamedParameters>::Plane_3& plane,
                       const NamedParameters& np = parameters::default_values())
 {
   const internal::Dplane mirror = internal::to_dplane(plane);
@@ -178,7 +178,7 @@ double symmetry_error(const TriangleMesh& tm,
 template <typename TriangleMesh, typename ReferenceMesh, typename NamedParameters1 = parameters::Default_named_parameters,
           typename NamedParameters2 = parameters::Default_named_parameters>
 double symmetry_error(const TriangleMesh& tm,
-                      const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters1>::type::Plane_3& plane,
+                      const typename Geom_traits_of_mesh<TriangleMesh, NamedParameters1>::Plane_3& plane,
                       const ReferenceMesh& reference, double max_distance,
                       const NamedParameters1& np1 = parameters::default_values(),
                       const NamedParameters2& np2 = parameters::default_values())
@@ -223,7 +223,7 @@ double symmetry_error(const TriangleMesh& tm,
 */
 template <typename TriangleMesh, typename FaceErrorMap, typename NamedParameters = parameters::Default_named_parameters>
 double face_symmetry_errors(const TriangleMesh& tm,
-                            const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3& plane,
+                            const typename Geom_traits_of_mesh<TriangleMesh, NamedParameters>::Plane_3& plane,
                             FaceErrorMap face_error_map, const NamedParameters& np = parameters::default_values())
 {
   const internal::Dplane mirror = internal::to_dplane(plane);

@@ -7,6 +7,7 @@
 
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/Rotational_symmetry.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/rotation/rotations_of_shape.h>
@@ -92,10 +93,10 @@ namespace CGAL::Symmetry_transform {
  * `gaussian_distance_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Rotational_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
+std::vector<Rotational_symmetry<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>>
 detect_rotational_symmetries(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   const int max_order = internal::max_order(np); // checked before the work
   return internal::with_progress(np, [&] {
     const double surface_share = internal::rotation_surface_share(num_faces(tm));
@@ -128,13 +129,13 @@ detect_rotational_symmetries(const TriangleMesh& tm, const NamedParameters& np =
  * inputs of `gaussian_distance_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Rotational_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>
+std::vector<Rotational_symmetry<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>>
 rotational_symmetries(
   const TriangleMesh& tm,
-  const std::vector<Principal_symmetry<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>>& planes,
+  const std::vector<Principal_symmetry<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>>& planes,
   const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   const int max_order = internal::max_order(np);
   std::vector<internal::Dplane> dplanes;
   for(const Principal_symmetry<GT>& p : planes) dplanes.push_back(internal::to_dplane(p.plane));
@@ -174,10 +175,10 @@ rotational_symmetries(
  * `gaussian_distance_transform_of_points()`.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Rotational_symmetry<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>>
+std::vector<Rotational_symmetry<Geom_traits_of_points<PointRange, NamedParameters>>>
 detect_rotational_symmetries_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   const int max_order = internal::max_order(np);
   return internal::with_progress(np, [&] { return internal::rotations_of_points(points, max_order, np); },
                                  [] { return std::vector<Rotational_symmetry<GT>>(); });

@@ -5,7 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRIC_REMESHING_H
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRIC_REMESHING_H
 
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
@@ -214,7 +214,7 @@ template <typename TriangleMesh, typename PlaneRange, typename NamedParameters =
 bool symmetric_approximate_triangle_mesh(const TriangleMesh& tm, const PlaneRange& planes,
                                          const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::with_progress(np, [&] { return internal::symmetric_remeshing<GT>(tm, planes, np); },
                                  [] { return false; });
 }

@@ -9,7 +9,7 @@
 #include <CGAL/Symmetry_transform/internal/alignment/frame_rules.h>
 #include <CGAL/Symmetry_transform/internal/alignment/joint_frame.h>
 #include <CGAL/Symmetry_transform/internal/alignment/mass_distribution.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/detection/detection.h>
@@ -47,10 +47,10 @@ namespace CGAL::Symmetry_transform {
  *         non-triangle face, all faces degenerate, NaN or infinite coordinate, ...).
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_frame<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
+Symmetry_frame<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>
 symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::to_symmetry_frame<GT>(internal::symmetry_frame_under_progress(
       np, [&] { return internal::detection_of_mesh(tm, np); }, [&] { return internal::mass_of_mesh(tm, np); }));
 }
@@ -83,10 +83,10 @@ symmetry_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::d
  *         (empty range, a single point, NaN or infinite coordinate, ...).
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Symmetry_frame<Geom_traits_of_points<PointRange, NamedParameters>>
 symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::to_symmetry_frame<GT>(internal::symmetry_frame_under_progress(
       np, [&] { return internal::detection_of_points(points, np); },
       [&] { return internal::mass_of_points(points, np); }));
@@ -117,10 +117,10 @@ symmetry_frame_of_points(const PointRange& points, const NamedParameters& np = p
  *         degenerate, or a NaN or infinite coordinate.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_frame<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
+Symmetry_frame<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>
 pca_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::to_symmetry_frame<GT>(internal::pca_frame(internal::mass_of_mesh(tm, np)));
 }
 
@@ -148,10 +148,10 @@ pca_frame(const TriangleMesh& tm, const NamedParameters& np = parameters::defaul
  *         infinite coordinate.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Symmetry_frame<Geom_traits_of_points<PointRange, NamedParameters>>
 pca_frame_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::to_symmetry_frame<GT>(internal::pca_frame(internal::mass_of_points(points, np)));
 }
 
@@ -185,11 +185,11 @@ pca_frame_of_points(const PointRange& points, const NamedParameters& np = parame
  *         (no triangle, an index out of range, all triangles degenerate, NaN or infinite coordinate, ...).
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Symmetry_frame<Geom_traits_of_points<PointRange, NamedParameters>>
 symmetry_frame_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                                 const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::to_symmetry_frame<GT>(internal::symmetry_frame_under_progress(
       np, [&] { return internal::detection_of_triangle_soup(points, triangles, np); },
       [&] { return internal::Mass_distribution(internal::triangles_of_soup(points, triangles, np)); }));
@@ -219,11 +219,11 @@ symmetry_frame_of_triangle_soup(const PointRange& points, const TriangleRange& t
  *         or a NaN or infinite coordinate.
 */
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_frame<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Symmetry_frame<Geom_traits_of_points<PointRange, NamedParameters>>
 pca_frame_of_triangle_soup(const PointRange& points, const TriangleRange& triangles,
                            const NamedParameters& np = parameters::default_values())
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits GT;
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
   return internal::to_symmetry_frame<GT>(internal::pca_frame(internal::Mass_distribution(
     internal::triangles_of_soup(points, triangles, np))));
 }

@@ -7,7 +7,7 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/gaussian_distance_transform.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/matching/descriptor_format.h>
 #include <CGAL/Symmetry_transform/internal/matching/distances.h>
 #include <CGAL/Symmetry_transform/internal/matching/settings.h>
@@ -239,12 +239,12 @@ double descriptor_distance(const Symmetry_descriptor<GeomTraits>& a, const Symme
  * \throws std::invalid_argument as `gaussian_distance_transform()` and `reflective_symmetry_transform()`.
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_descriptor<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>
+Symmetry_descriptor<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>
 symmetry_descriptor(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
   const auto params = internal::descriptor_parameters(np);
   const auto gedt = gaussian_distance_transform(tm, params);
-  return Symmetry_descriptor<typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type>(
+  return Symmetry_descriptor<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>(
     reflective_symmetry_transform(gedt, params), gedt);
 }
 
@@ -276,12 +276,12 @@ symmetry_descriptor(const TriangleMesh& tm, const NamedParameters& np = paramete
  * \throws std::invalid_argument as `gaussian_distance_transform_of_points()` and `reflective_symmetry_transform()`.
 */
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
-Symmetry_descriptor<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>
+Symmetry_descriptor<Geom_traits_of_points<PointRange, NamedParameters>>
 symmetry_descriptor_of_points(const PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   const auto params = internal::descriptor_parameters(np);
   const auto gedt = gaussian_distance_transform_of_points(points, params);
-  return Symmetry_descriptor<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits>(
+  return Symmetry_descriptor<Geom_traits_of_points<PointRange, NamedParameters>>(
     reflective_symmetry_transform(gedt, params), gedt);
 }
 

@@ -7,7 +7,7 @@
 
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
@@ -207,7 +207,7 @@ inline double symmetry_transform_value(double symmetry_measure)
 */
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_distance_error(const TriangleMesh& tm,
-                               const typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type::Plane_3& plane,
+                               const typename Geom_traits_of_mesh<TriangleMesh, NamedParameters>::Plane_3& plane,
                                const NamedParameters& np = parameters::default_values())
 {
   return internal::symmetry_distance_error_of_triangles(internal::triangles_of_mesh(tm, np), internal::to_dplane(plane), np);
@@ -244,7 +244,7 @@ double symmetry_distance_error(const TriangleMesh& tm,
 template <typename PointRange, typename TriangleRange, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_distance_error_of_triangle_soup(
   const PointRange& points, const TriangleRange& triangles,
-  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  const typename Geom_traits_of_points<PointRange, NamedParameters>::Plane_3& plane,
   const NamedParameters& np = parameters::default_values())
 {
   return internal::symmetry_distance_error_of_triangles(internal::triangles_of_soup(points, triangles, np),
@@ -285,7 +285,7 @@ double symmetry_distance_error_of_triangle_soup(
 template <typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 double symmetry_distance_error_of_points(
   const PointRange& points,
-  const typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits::Plane_3& plane,
+  const typename Geom_traits_of_points<PointRange, NamedParameters>::Plane_3& plane,
   const NamedParameters& np = parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;

@@ -6,7 +6,7 @@
 #define CGAL_SYMMETRY_TRANSFORM_SYMMETRY_SEGMENTATION_H
 
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
-#include <CGAL/Symmetry_transform/internal/common/mesh_geom_traits.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
@@ -242,7 +242,7 @@ template <typename TriangleMesh, typename SegmentIdMap, typename NamedParameters
 std::size_t segment_by_symmetry(const TriangleMesh& tm, SegmentIdMap segment_id_map,
                                 const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Mesh_geom_traits<TriangleMesh, NamedParameters>::type GT;
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   const internal::Segmentation_settings settings = internal::segmentation_settings(np);
   internal::triangles_of_mesh(tm, np); // the checks of the bad-input contract
   const auto vpm = internal::vertex_point_map(tm, np);

@@ -22,6 +22,16 @@
 
 namespace CGAL::Symmetry_transform {
 
+/// \ingroup PkgSymmetryTransformViewpointRef
+/// The geometric traits class `GT` of a range of `Principal_symmetry<GT>`, such as the result of
+/// `detect_principal_symmetries()`: the viewpoints of those symmetries are given in it.
+template <typename SymmetryRange>
+#ifdef DOXYGEN_RUNNING
+using Geom_traits_of_symmetries = unspecified_type;
+#else
+using Geom_traits_of_symmetries = typename internal::Kernel_of_symmetry_range<SymmetryRange>::type;
+#endif
+
 /*!
  * \ingroup PkgSymmetryTransformViewpointRef
  * The viewpoint score of a view direction (thesis, section 4.3.2):
@@ -80,7 +90,7 @@ template <typename SymmetryRange, typename OutputIterator,
 OutputIterator best_viewpoints(const SymmetryRange& symmetries, OutputIterator out,
                                const NamedParameters& np = parameters::default_values())
 {
-  typedef typename internal::Kernel_of_symmetry_range<SymmetryRange>::type GT;
+  typedef Geom_traits_of_symmetries<SymmetryRange> GT;
   internal::check_named_parameters(np);
   const std::size_t directions = internal::read_count(np, internal_np::st_number_of_directions,
                                                       internal::defaults::viewpoint_directions,
@@ -106,10 +116,10 @@ OutputIterator best_viewpoints(const SymmetryRange& symmetries, OutputIterator o
  * \throws std::invalid_argument if a plane has a zero normal or a symmetry measure is negative or not finite.
 */
 template <typename SymmetryRange>
-Viewpoint<typename internal::Kernel_of_symmetry_range<SymmetryRange>::type>
+Viewpoint<Geom_traits_of_symmetries<SymmetryRange>>
 worst_viewpoint(const SymmetryRange& symmetries)
 {
-  typedef typename internal::Kernel_of_symmetry_range<SymmetryRange>::type GT;
+  typedef Geom_traits_of_symmetries<SymmetryRange> GT;
   const internal::Scored_view worst = internal::worst_view(internal::Weighted_normals(symmetries));
   return internal::make_viewpoint<GT>(worst.second, worst.first);
 }
@@ -130,10 +140,10 @@ worst_viewpoint(const SymmetryRange& symmetries)
  * measure is negative or not finite.
 */
 template <typename SymmetryRange>
-Surface_mesh<typename internal::Kernel_of_symmetry_range<SymmetryRange>::type::Point_3>
+Surface_mesh<typename Geom_traits_of_symmetries<SymmetryRange>::Point_3>
 viewpoint_score_sphere(const SymmetryRange& symmetries, unsigned int subdivisions = 4)
 {
-  typedef typename internal::Kernel_of_symmetry_range<SymmetryRange>::type GT;
+  typedef Geom_traits_of_symmetries<SymmetryRange> GT;
   return internal::score_sphere<GT>(internal::Weighted_normals(symmetries), subdivisions);
 }
 

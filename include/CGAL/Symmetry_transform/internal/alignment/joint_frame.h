@@ -13,7 +13,7 @@
 // intersection of the planes of the frame and of the principal planes nearly parallel to them;
 // the axes ordered by strength or by the variance of the mass, the second and third possibly
 // from inertia. Rules compared by benchmark/Symmetry_transform/alignment_experiment on partial
-// scans (RESULTS.md, issue 15); symmetry_frame() keeps the thesis's greedy rule (frame_rules.h)
+// scans (RESULTS.md, "Alignment"); symmetry_frame() keeps the thesis's greedy rule (frame_rules.h)
 // by default and, with partial_data(true), takes the axes of partial_data_rule and the centre of
 // the three most symmetric orthogonal planes of the whole transform (orthogonal_planes.h).
 
@@ -56,8 +56,8 @@ struct Frame_rule
 
 // The weight of the centre of mass, along each normal, in the centre of partial data (the planes
 // weigh their values, 0.5 to 1): from 0.1 to 1 it trades how often the centre of symmetry is the
-// closer against how much closer it is; 0.4 meets both of the issue's figures on the two sets of
-// scans, 0.5 falls below 1.5 times on the man-made set (RESULTS.md, issue 15).
+// closer against how much closer it is; 0.4 is the weight that holds both on the two sets of scans,
+// 0.5 falls below 1.5 times on the man-made set (RESULTS.md, "Alignment").
 constexpr double partial_data_mass_prior = 0.4;
 
 // A principal plane of at least this measure maps the surface onto itself: its refined offset

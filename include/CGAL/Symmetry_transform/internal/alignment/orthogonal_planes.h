@@ -11,7 +11,7 @@
 // direction bin keeps its largest value over the offsets, a triple is scored by three look-ups.
 // Every direction bin is tried as the first normal, with orthogonal_search_turns normals
 // perpendicular to it and the third their cross product (0.11 to 0.15 s at 64^3;
-// RESULTS.md, issue 15).
+// RESULTS.md, "Alignment").
 
 #include <CGAL/Symmetry_transform/internal/prst/plane_bins.h>
 #include <CGAL/Symmetry_transform/reflective_symmetry_transform.h>

@@ -119,7 +119,7 @@ void mark_band_of_triangle(const Voxel_grid<GT>& grid, const Dtriangle& t, doubl
 
 // The band of all triangles. A union, whatever the order: each thread marks the voxels of its
 // own layers (a fixed slab of the grid) for every triangle. On a fine mesh, each triangle's box
-// spans about (2 cutoff / h)^3 = 10^3 voxels, the main cost of its GEDT (issue 14).
+// spans about (2 cutoff / h)^3 = 10^3 voxels, the main cost of its GEDT.
 template <typename GT>
 std::vector<char> band_of_triangles(const Voxel_grid<GT>& grid, const std::vector<Dtriangle>& triangles, double cutoff,
                                     unsigned threads)

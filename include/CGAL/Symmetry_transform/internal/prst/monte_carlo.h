@@ -262,7 +262,7 @@ private:
   // Position of voxel (i,j,k) along a Hilbert curve through the grid (J. Skilling,
   // "Programming the Hilbert curve", 2004): consecutive voxels along it are neighbours.
   // Kept instead of CGAL::hilbert_sort: no policy or axis order of CGAL's sort gives this order,
-  // so it would change every Monte Carlo result, for no gain in error or time (RESULTS.md, issue 18).
+  // so it would change every Monte Carlo result, for no gain in error or time.
   static std::uint64_t hilbert_index(std::size_t i, std::size_t j, std::size_t k)
   {
     constexpr int bits = 12;

@@ -1,0 +1,43 @@
+# cmake -DHTML_DIR=<doxygen html folder> -P check_reference_signatures.cmake
+# Fails if a page of the reference (groups, classes, structs, namespaces, member indexes) names
+# something of namespace internal: a user must be able to read every signature. Listings of the
+# headers (*_source.html) are not the reference and may show internal code. Fails too if an entry
+# of the navigation tree is a qualified name, which the narrow tree would cut to its scope.
+file(GLOB pages ${HTML_DIR}/group__*.html ${HTML_DIR}/class*.html ${HTML_DIR}/struct*.html
+                ${HTML_DIR}/namespace*.html ${HTML_DIR}/functions*.html)
+list(FILTER pages EXCLUDE REGEX "_source\\.html$")
+# A run that scans nothing proves nothing: the reference of the main function must be among them.
+set(found_main_function FALSE)
+set(offenders "")
+foreach(page IN LISTS pages)
+  file(READ ${page} html)
+  if(html MATCHES "detect_principal_symmetries")
+    set(found_main_function TRUE)
+  endif()
+  string(REGEX MATCHALL "[^<>\n]*internal::[^<>\n]*" hits "${html}")
+  if(hits)
+    get_filename_component(name ${page} NAME)
+    list(GET hits 0 first)
+    string(APPEND offenders "  ${name}: ${first}\n")
+  endif()
+endforeach()
+list(LENGTH pages count)
+if(NOT found_main_function)
+  message(FATAL_ERROR "no reference page of detect_principal_symmetries among ${count} pages of ${HTML_DIR}")
+endif()
+if(NOT offenders STREQUAL "")
+  message(FATAL_ERROR "the reference names namespace internal:\n${offenders}")
+endif()
+file(GLOB trees ${HTML_DIR}/group__*.js)
+foreach(tree IN LISTS trees)
+  file(READ ${tree} entries)
+  string(REGEX MATCH "\\[ \"CGAL::[^\"]*" qualified "${entries}")
+  if(qualified)
+    get_filename_component(name ${tree} NAME)
+    string(APPEND offenders "  ${name}: ${qualified}\"\n")
+  endif()
+endforeach()
+if(NOT offenders STREQUAL "")
+  message(FATAL_ERROR "the navigation tree has qualified entries:\n${offenders}")
+endif()
+message(STATUS "${count} reference pages, none naming namespace internal; no qualified navigation entry")
