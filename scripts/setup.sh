@@ -8,10 +8,14 @@ DATA_DIR=${DATA_DIR:-$ROOT/build/data}
 
 # doxygen, graphviz (the manual's diagrams) and libjs-mathjax (its formulas, offline) build the
 # manual; python3 runs scripts/longest_functions.py (the ctest test function_length); clang and
-# libclang-rt-dev (its sanitizer and libFuzzer runtimes) build the fuzzer (scripts/fuzz.sh).
+# libclang-rt-dev (its sanitizer and libFuzzer runtimes) build the fuzzer (scripts/fuzz.sh). The
+# Python package (python/) is built with pybind11 against Debian's Python, installed with its pip
+# into a venv, and tested with its pytest; distributed is Dask's cluster.
 PACKAGES=(build-essential cmake pkg-config libcgal-dev libcgal-demo libeigen3-dev libboost-dev
           libfftw3-dev libgtest-dev libbenchmark-dev doxygen graphviz libjs-mathjax python3 libtbb-dev
-          libgmp-dev libmpfr-dev clang libclang-rt-dev)
+          libgmp-dev libmpfr-dev clang libclang-rt-dev
+          python3-dev pybind11-dev python3-numpy python3-venv python3-pip python3-setuptools python3-wheel
+          python3-pytest python3-distributed)
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"
