@@ -64,11 +64,16 @@ def _options(function: str, options: dict) -> dict:
     return options
 
 
+def _arrays(*arrays):
+    """NumPy arrays of what the caller gave (lists too), None kept: the extension checks them."""
+    return tuple(None if a is None else np.asarray(a) for a in arrays)
+
+
 def _vector(values) -> str:
     return "(" + ", ".join(f"{v:.6g}" for v in values) + ")"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # NumPy fields: no element-wise ==
 class PrincipalSymmetry:
     """A plane of (partial) mirror symmetry: the points x with ``normal @ x + offset == 0``.
 
@@ -87,7 +92,7 @@ class PrincipalSymmetry:
                 f"symmetry={self.symmetry:.4f}, support={self.support:.4f}, sde={self.sde:.3g})")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # NumPy fields: no element-wise ==
 class RotationalSymmetry:
     """An axis of rotational symmetry through ``point`` along the unit vector ``axis``, of order
     ``order`` (rotations by multiples of 2 pi / order map the shape onto itself; 0: continuous,
@@ -104,7 +109,7 @@ class RotationalSymmetry:
                 f"symmetry={self.symmetry:.4f}, support={self.support:.4f})")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # NumPy fields: no element-wise ==
 class SymmetryFrame:
     """A shape's centre of symmetry and its principal symmetry axes (the rows of ``axes``)."""
     center: np.ndarray
@@ -118,7 +123,7 @@ class SymmetryFrame:
         return f"SymmetryFrame(center={_vector(self.center)}, axes=[{', '.join(_vector(a) for a in self.axes)}])"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # NumPy fields: no element-wise ==
 class Viewpoint:
     """A viewing direction and its viewpoint score (the higher, the better the view)."""
     direction: np.ndarray
@@ -144,21 +149,24 @@ def principal_symmetries(vertices, faces=None, normals=None, *, callback: Progre
                          **options) -> List[PrincipalSymmetry]:
     """The principal symmetries of a mesh or a point set, strongest first, each with its symmetry
     distance error (``sde_samples`` samples, default 20000)."""
-    found = _core.principal_symmetries(vertices, faces, normals, _options("principal_symmetries", options), callback)
+    options = _options("principal_symmetries", options)
+    found = _core.principal_symmetries(*_arrays(vertices, faces, normals), options, callback)
     return [PrincipalSymmetry(*plane) for plane in found]
 
 
 def symmetry_distance_error(vertices, faces, plane: Plane, normals=None, **options) -> float:
     """The symmetry distance error of a plane, given as a PrincipalSymmetry or (normal, offset)."""
     normal, offset = (plane.normal, plane.offset) if isinstance(plane, PrincipalSymmetry) else plane
-    return _core.symmetry_distance_error(vertices, faces, normals, np.asarray(normal, dtype=float), float(offset),
+    return _core.symmetry_distance_error(*_arrays(vertices, faces, normals), np.asarray(normal, dtype=float),
+                                         float(offset),
                                          _options("symmetry_distance_error", options))
 
 
 def rotational_symmetries(vertices, faces=None, normals=None, *, callback: Progress = None,
                           **options) -> List[RotationalSymmetry]:
     """The axes of rotational symmetry of a mesh or a point set, strongest first."""
-    found = _core.rotational_symmetries(vertices, faces, normals, _options("rotational_symmetries", options), callback)
+    options = _options("rotational_symmetries", options)
+    found = _core.rotational_symmetries(*_arrays(vertices, faces, normals), options, callback)
     return [RotationalSymmetry(*axis) for axis in found]
 
 
@@ -166,19 +174,20 @@ def bop_symmetries(vertices, faces, *, callback: Progress = None, **options) -> 
     """The symmetry fields of a BOP ``models_info.json`` entry, ready for ``json.dump``:
     ``symmetries_discrete`` (4 x 4 row-major matrices, flattened) and ``symmetries_continuous``
     (axis and offset), with the shape's ``point_group``. The units are those of the vertices."""
-    return json.loads(_core.bop_symmetries(vertices, faces, _options("bop_symmetries", options), callback))
+    return json.loads(_core.bop_symmetries(*_arrays(vertices, faces), _options("bop_symmetries", options), callback))
 
 
 def symmetry_frame(vertices, faces=None, normals=None, *, callback: Progress = None, **options) -> SymmetryFrame:
     """The symmetry frame of a mesh or a point set: where principal component analysis fails
     (several equal moments, missing parts), its principal symmetries fix the axes."""
-    return SymmetryFrame(*_core.symmetry_frame(vertices, faces, normals, _options("symmetry_frame", options), callback))
+    options = _options("symmetry_frame", options)
+    return SymmetryFrame(*_core.symmetry_frame(*_arrays(vertices, faces, normals), options, callback))
 
 
 def descriptor(vertices, faces, *, callback: Progress = None, **options) -> Descriptor:
     """The symmetry descriptor of a mesh moved into its symmetry frame (``grid_resolution``
     default 32), for ``descriptor_distance()``."""
-    return _core.descriptor(vertices, faces, _options("descriptor", options), callback)
+    return _core.descriptor(*_arrays(vertices, faces), _options("descriptor", options), callback)
 
 
 def descriptor_distance(a: Descriptor, b: Descriptor) -> float:
@@ -188,14 +197,14 @@ def descriptor_distance(a: Descriptor, b: Descriptor) -> float:
 
 def best_viewpoints(vertices, faces=None, normals=None, *, callback: Progress = None, **options) -> List[Viewpoint]:
     """The best viewing directions of a shape, best first, from its principal symmetries."""
-    found = _core.best_viewpoints(vertices, faces, normals, _options("best_viewpoints", options), callback)
+    found = _core.best_viewpoints(*_arrays(vertices, faces, normals), _options("best_viewpoints", options), callback)
     return [Viewpoint(*view) for view in found]
 
 
 def segment(vertices, faces, *, callback: Progress = None, **options) -> np.ndarray:
     """A segment label (int64) per face, in the order of ``faces``: parts of different symmetries.
     The faces must form a consistently oriented manifold surface (``read_mesh()`` repairs files)."""
-    return _core.segment(vertices, faces, _options("segment", options), callback)
+    return _core.segment(*_arrays(vertices, faces), _options("segment", options), callback)
 
 
 def symmetric_remesh(vertices, faces, planes: Optional[Iterable[Plane]] = None, *, callback: Progress = None,
@@ -207,8 +216,8 @@ def symmetric_remesh(vertices, faces, planes: Optional[Iterable[Plane]] = None, 
     if planes is not None:
         kept = [(np.asarray(p.normal if isinstance(p, PrincipalSymmetry) else p[0], dtype=float),
                  float(p.offset if isinstance(p, PrincipalSymmetry) else p[1])) for p in planes]
-    anchors, triangles, ok = _core.symmetric_remesh(vertices, faces, kept, _options("symmetric_remesh", options),
-                                                    callback)
+    options = _options("symmetric_remesh", options)
+    anchors, triangles, ok = _core.symmetric_remesh(*_arrays(vertices, faces), kept, options, callback)
     if len(triangles) == 0:
         raise ValueError("the remeshing gave no triangle; try more proxies (max_number_of_proxies)")
     if not ok:

@@ -143,7 +143,8 @@ def main(argv: Optional[List[str]] = None) -> int:
     parser.add_argument("--workers", type=int, help="workers of the LocalCluster (default: the number of cores)")
     parser.add_argument("--timeout", type=float, default=0, help="seconds per file (default 0: no limit)")
     parser.add_argument("--retries", type=int, default=0, help="retries of a file that timed out or lost its worker")
-    parser.add_argument("--retry-errors", action="store_true", help="processes again the files whose record is an error")
+    parser.add_argument("--retry-errors", action="store_true",
+                        help="processes again the files whose record is an error")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     for name in _BATCH_OPTIONS:
         parser.add_argument("--" + name.replace("_", "-"), type=int, help="as principal_symmetries_batch's option")

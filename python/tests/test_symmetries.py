@@ -36,11 +36,13 @@ def test_mirror_of_a_shape_moved_a_million_radii_away_moves_with_it():
     assert np.sign(strongest.offset) == -np.sign(np.dot(strongest.normal, t))
 
 
-def test_float32_and_int32_arrays_give_the_float64_answer():
+def test_float32_int32_and_lists_give_the_float64_answer():
     V, F = tapered_house()
     wide = st.principal_symmetries(V, F, grid_resolution=32)[0]
     narrow = st.principal_symmetries(V.astype(np.float32), F.astype(np.int32), grid_resolution=32)[0]
     assert angle_degrees(wide.normal, narrow.normal) < 1e-3
+    listed = st.principal_symmetries(V.tolist(), F.tolist(), grid_resolution=32)[0]
+    assert np.array_equal(listed.normal, wide.normal) and listed.offset == wide.offset
 
 
 @pytest.mark.parametrize("blades", [3, 5])
