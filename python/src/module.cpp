@@ -61,17 +61,26 @@ std::vector<Triangle> triangle_rows(const py::array& a, std::size_t number_of_po
   return triangles;
 }
 
+// The option `name` if given (not None): an integer (a Python or NumPy one, not a bool) or a real
+// number, as T asks.
 template <typename T>
 std::optional<T> option(const py::dict& keywords, const char* name)
 {
   if(!keywords.contains(name) || keywords[name].is_none()) return std::nullopt;
   const py::object value = keywords[name];
   if constexpr(std::is_integral_v<T>) {
-    if(!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+    if(!PyIndex_Check(value.ptr()) || py::isinstance<py::bool_>(value))
       throw std::invalid_argument(std::string(name) + " must be an integer");
-    if(value.cast<long long>() < 0) throw std::invalid_argument(std::string(name) + " must not be negative");
+    const long long integer = py::int_(value).cast<long long>();
+    if(integer < 0) throw std::invalid_argument(std::string(name) + " must not be negative");
+    return T(integer);
+  } else {
+    try {
+      return py::float_(value).cast<T>();
+    } catch(const py::error_already_set&) {
+      throw std::invalid_argument(std::string(name) + " must be a number");
+    }
   }
-  return value.cast<T>();
 }
 
 } // namespace

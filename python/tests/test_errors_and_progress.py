@@ -35,6 +35,13 @@ def test_bad_options():
         st.principal_symmetries(V, F, grid_resolution=4)
     with pytest.raises(ValueError, match="random_seed must be an integer"):
         st.principal_symmetries(V, F, random_seed=1.5)
+    with pytest.raises(ValueError, match="gaussian_width must be a number"):
+        st.principal_symmetries(V, F, gaussian_width="wide")
+    with pytest.raises(ValueError, match="number_of_threads must not be negative"):
+        st.principal_symmetries(V, F, number_of_threads=-1)
+    # NumPy's integers and floats are numbers too.
+    numpy_options = st.principal_symmetries(V, F, grid_resolution=np.int64(32), gaussian_width=np.float32(1.5))
+    assert np.allclose(numpy_options[0].normal, st.principal_symmetries(V, F, grid_resolution=32)[0].normal)
     with pytest.raises(ValueError, match="normals has 3 rows for 8 points"):
         st.principal_symmetries(V, normals=np.ones((3, 3)))
 
