@@ -55,7 +55,9 @@ struct Shape
 // The shape of V (n x 3 floats), F (m x 3 integers or None) and N (n x 3 floats or None);
 // throws std::invalid_argument, Python's ValueError, naming the array and what is wrong.
 Shape shape_of(const py::array& vertices, const py::object& faces, const py::object& normals);
-Mesh mesh_of(const Shape& shape); // face i is triangle i; throws if the soup is no surface
+// The mesh of a soup, face i its triangle i: oriented, its non-manifold points duplicated;
+// throws std::invalid_argument if even that gives no surface.
+Mesh mesh_of(const Shape& shape);
 
 py::array_t<double> array_of(const std::vector<Point>& points);
 py::array_t<std::int64_t> array_of(const std::vector<Triangle>& triangles);

@@ -3,7 +3,8 @@
 // Author(s): The CGAL Symmetry_transform developers
 
 // Files: meshes and point sets read and repaired as the demo programs read them, and the batch
-// command's record of a file, so that a collection labelled from Python has the same records.
+// command's record of a file, file list and resumption, so that a collection labelled from Python
+// has the same records.
 
 #include "common.h"
 
@@ -72,6 +73,7 @@ void bind_files(py::module_& m)
   m.def("read_mesh", &read_mesh, py::arg("path"));
   m.def("read_points", &read_points, py::arg("path"));
   m.def("batch_record", &batch_record, py::arg("path"), py::arg("options"));
+  m.def("files_done", &examples::batch::files_done, py::arg("output"), py::arg("retry_errors"));
   m.def("input_files", [](const std::vector<std::string>& arguments) { return examples::batch::input_files(arguments, {}); },
         py::arg("arguments"));
 }

@@ -7,10 +7,11 @@
 
 #include "common.h"
 
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include "input_files.h"
+
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 
 #include <cmath>
-#include <thread>
 
 namespace symmetry_transform_python {
 
@@ -109,14 +110,12 @@ Shape shape_of(const py::array& vertices, const py::object& faces, const py::obj
 
 Mesh mesh_of(const Shape& shape)
 {
-  namespace PMP = CGAL::Polygon_mesh_processing;
   if(shape.is_point_set()) throw std::invalid_argument("this function needs faces: a mesh, not a point set");
-  if(!PMP::is_polygon_soup_a_polygon_mesh(shape.triangles))
-    throw std::invalid_argument("the faces do not form a consistently oriented manifold surface; repair them first "
-                                "(read_mesh() does, for a file)");
-  Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(shape.points, shape.triangles, mesh);
-  return mesh;
+  try { // oriented, non-manifold points duplicated, as the demo programs do
+    return examples::mesh_of_soup<Mesh>(examples::Triangle_soup<Point>{shape.points, shape.triangles}, true);
+  } catch(const std::runtime_error& e) {
+    throw std::invalid_argument(std::string("the faces do not form a surface: ") + e.what());
+  }
 }
 
 py::array_t<double> array_of(const std::vector<Point>& points)
@@ -184,7 +183,7 @@ Options options_of(const py::dict& k)
 
 unsigned threads_of(const Options& options)
 {
-  return options.number_of_threads.value_or((std::max)(1u, std::thread::hardware_concurrency()));
+  return options.number_of_threads.value_or(ST::internal::default_number_of_threads());
 }
 
 bool Progress::report(double progress)

@@ -15,12 +15,13 @@ namespace symmetry_transform_python {
 
 namespace {
 
-// The symmetry distance error of a plane, with the batch command's samples and seed; NaN for
+// The symmetry distance error of a plane, with the samples and seed of symmetry_distance_error()'s
+// defaults (those of the batch command); NaN for
 // sde_samples=0, which skips it (a detection alone, as the C++ function).
 double sde_of(const Shape& shape, const K::Plane_3& plane, const Options& o)
 {
   if(o.sde_samples == std::size_t(0)) return std::numeric_limits<double>::quiet_NaN();
-  const auto np = CGAL::parameters::number_of_points_on_faces(o.sde_samples.value_or(20000))
+  const auto np = CGAL::parameters::number_of_points_on_faces(o.sde_samples.value_or(defaults::metric_samples))
                     .random_seed(o.random_seed.value_or(defaults::random_seed))
                     .number_of_threads(threads_of(o));
   if(shape.is_point_set())

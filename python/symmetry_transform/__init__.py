@@ -203,7 +203,8 @@ def best_viewpoints(vertices, faces=None, normals=None, *, callback: Progress = 
 
 def segment(vertices, faces, *, callback: Progress = None, **options) -> np.ndarray:
     """A segment label (int64) per face, in the order of ``faces``: parts of different symmetries.
-    The faces must form a consistently oriented manifold surface (``read_mesh()`` repairs files)."""
+    Faces of inconsistent orientation or non-manifold vertices are repaired first, as the demo
+    programs do; faces that still form no surface raise ``ValueError``."""
     return _core.segment(*_arrays(vertices, faces), _options("segment", options), callback)
 
 

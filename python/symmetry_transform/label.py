@@ -20,38 +20,13 @@ import os
 import subprocess
 import sys
 import time
-from typing import Dict, Iterable, List, Optional, Set
+from typing import Dict, Iterable, List, Optional
 
 from . import _core
 
 # Options of the records, as the C++ batch names them on its command line.
 _BATCH_OPTIONS = {"resolution": "grid_resolution", "planes": "max_number_of_planes", "samples": "number_of_samples",
                   "sde_samples": "sde_samples", "seed": "random_seed"}
-
-
-def files_done(output: str, retry_errors: bool) -> Set[str]:
-    """The files that have a complete record in ``output``; incomplete lines (a run killed while
-    writing) and, with ``retry_errors``, error records are dropped from the file."""
-    if not os.path.exists(output):
-        return set()
-    with open(output, "rb") as f:
-        lines = f.read().split(b"\n")
-    kept, done = [], set()
-    for line in lines[:-1]:  # the last piece has no end of line: incomplete or empty
-        try:
-            record = json.loads(line)
-        except ValueError:
-            continue
-        if retry_errors and record.get("status") == "error":
-            continue
-        kept.append(line)
-        done.add(record["file"])
-    if len(kept) != len(lines) - 1 or lines[-1]:
-        temporary = output + ".tmp"
-        with open(temporary, "wb") as f:
-            f.write(b"".join(line + b"\n" for line in kept))
-        os.replace(temporary, output)
-    return done
 
 
 def record(file: str, options: Dict[str, int], timeout: float) -> str:
@@ -106,7 +81,9 @@ def label(inputs: Iterable[str], output: str, scheduler: Optional[str] = None, w
     every = _core.input_files(list(inputs))
     if not every:
         raise ValueError("no input: give files or folders")
-    done = files_done(output, retry_errors)
+    # The C++ batch's resumption: complete records kept, a line cut short (and, with retry_errors,
+    # an error record) dropped from the file.
+    done = _core.files_done(output, retry_errors)
     files = [f for f in every if f not in done]
     summary = {"files": len(every), "done_before": len(every) - len(files), "errors": 0}
     if not files:

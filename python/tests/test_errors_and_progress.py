@@ -46,10 +46,12 @@ def test_bad_options():
         st.principal_symmetries(V, normals=np.ones((3, 3)))
 
 
-def test_segmentation_needs_a_manifold_mesh():
+def test_faces_are_repaired_into_a_surface_or_refused():
     V, F = box()
-    with pytest.raises(ValueError, match="consistently oriented manifold"):
-        st.segment(V, np.vstack([F, F[:1]]))
+    flipped = np.vstack([F[:-1], F[-1:, ::-1]])  # one face of inconsistent orientation
+    assert st.segment(V, flipped, max_segmentation_depth=1).shape == (len(F),)
+    with pytest.raises(ValueError, match="the faces do not form a surface"):
+        st.segment(V, np.vstack([F, [[0, 0, 1]]]))  # a face through one vertex twice
 
 
 def test_progress_rises_to_one_and_a_false_answer_cancels():

@@ -97,12 +97,20 @@ def test_bull_planes_agree_with_the_cpp_demo_to_its_digits(bull):
 
 def test_every_function_on_a_real_mesh(bull):
     V, F = bull
-    frame = st.symmetry_frame(V, F, grid_resolution=32)
+    strongest = st.principal_symmetries(V, F, max_number_of_planes=1)[0]
+    frame = st.symmetry_frame(V, F)
     assert np.allclose(frame.axes @ frame.axes.T, np.eye(3), atol=1e-9)
-    aligned = frame.to_canonical(V)
-    assert np.allclose(aligned.mean(axis=0), frame.to_canonical(V.mean(axis=0)[None])[0])
+    # The first axis of the frame is the normal of the strongest plane, through the centre.
+    assert angle_degrees(frame.axes[0], strongest.normal) < 0.01
+    assert abs(np.dot(strongest.normal, frame.center) + strongest.offset) < 1e-6
+    assert np.allclose(frame.to_canonical(frame.center[None]), 0.0)
+    # Descriptors are compared in the shapes' frames: a moved bull is nearer to the bull than a cow.
+    rng = np.random.default_rng(11)
     a = st.descriptor(V, F)
+    moved = st.descriptor(V @ random_rotation(rng).T + [5.0, -2.0, 1.0], F)
+    cow = st.descriptor(*st.read_mesh(str(required(DATA / "meshes" / "cow.off"))))
     assert st.descriptor_distance(a, a) == 0.0
+    assert st.descriptor_distance(a, moved) < 0.2 * st.descriptor_distance(a, cow)
     views = st.best_viewpoints(V, F, grid_resolution=32)
     assert views and all(np.isclose(np.linalg.norm(v.direction), 1.0) for v in views)
     assert all(views[i].score >= views[i + 1].score for i in range(len(views) - 1))
@@ -112,7 +120,6 @@ def test_every_function_on_a_real_mesh(bull):
         warnings.simplefilter("ignore", RuntimeWarning)
         anchors, triangles = st.symmetric_remesh(V, F, max_number_of_proxies=50)
     assert anchors.shape[1] == 3 and triangles.max() < len(anchors) and len(triangles) > 50
-    strongest = st.principal_symmetries(V, F, max_number_of_planes=1)[0]
     assert st.symmetry_distance_error(V, F, strongest) == pytest.approx(strongest.sde, rel=1e-12)
     assert "PrincipalSymmetry(normal=(" in repr(strongest)
 
