@@ -12,6 +12,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -41,52 +42,69 @@ private:
   void (*call_)(const void*, unsigned, std::size_t, std::size_t);
 };
 
-// parallel_for() under a Progress: the workers see it (parallel_step(), stop_requested()); the
-// caller, which runs no slice, calls the callback while it waits if it is the owner (a
-// parallel_for() nested in a worker only waits), then throws Operation_cancelled if the work was
-// cancelled. The slices are those of parallel_for().
+// Runs run(t) for every t in [0, threads): t = 0 on the calling thread, the others on the
+// workers of Worker_pool, or on threads of their own when the pool is busy (another caller's
+// loop, or a loop nested in a worker). `run` must not throw. While the caller waits for the
+// others, it calls `waiting` (if any) every callback_interval_seconds.
+inline void run_slices(unsigned threads, const std::function<void(unsigned)>& run,
+                       const std::function<void()>& waiting = {})
+{
+  if(threads == 1) return run(0u);
+  if(Worker_pool::instance().run(threads, run, waiting, callback_interval_seconds)) return;
+  std::mutex mutex;
+  std::condition_variable finished;
+  unsigned running = threads - 1;
+  std::vector<std::thread> workers;
+  for(unsigned t = 1; t < threads; ++t)
+    workers.emplace_back([&, t] {
+      run(t);
+      std::lock_guard<std::mutex> lock(mutex);
+      --running;
+      finished.notify_one();
+    });
+  run(0u);
+  const auto done = [&] { return running == 0; };
+  if(waiting) {
+    wait_calling(mutex, finished, done, waiting, callback_interval_seconds);
+  } else {
+    std::unique_lock<std::mutex> lock(mutex);
+    finished.wait(lock, done);
+  }
+  for(std::thread& w : workers) w.join();
+}
+
+// parallel_for() under a Progress: every slice sees it (parallel_step(), stop_requested()). The
+// owner, which runs slice 0 when it calls the loop, calls the callback as it goes and while it
+// waits for the others, then throws Operation_cancelled if the work was cancelled; a loop nested
+// in a body reports no fraction of its own. A callback that throws stops the workers, and its
+// exception goes on before theirs.
 inline void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned threads, Slice_body body)
 {
   Parallel_progress loop;
   loop.count = count;
-  if(threads == 1) {
-    Worker_progress_scope scope(&progress, &loop);
-    body(0u, std::size_t(0), count);
-  } else {
-    std::vector<std::exception_ptr> errors(threads + 1);
-    std::mutex mutex;
-    std::condition_variable finished;
-    unsigned running = threads;
-    std::vector<std::thread> workers;
-    for(unsigned t = 0; t < threads; ++t)
-      workers.emplace_back([&, t] {
-        try {
-          Worker_progress_scope scope(&progress, &loop);
-          body(t, count * t / threads, count * (t + 1) / threads);
-        } catch(...) {
-          errors[t] = std::current_exception();
-        }
-        std::lock_guard<std::mutex> lock(mutex);
-        --running;
-        finished.notify_one();
-      });
-    const auto interval = std::chrono::duration<double>(callback_interval_seconds);
-    const bool owner = progress.on_owner_thread();
-    for(std::unique_lock<std::mutex> lock(mutex); !finished.wait_for(lock, interval, [&] { return running == 0; });) {
-      if(!owner) continue;
-      lock.unlock();
+  loop.reports = progress.on_owner_thread();
+  std::vector<std::exception_ptr> errors(threads + 1); // the last for the callback's
+  run_slices(
+    threads,
+    [&](unsigned t) {
       try {
-        progress.call(double(loop.done.load(std::memory_order_relaxed)) / double(count), false);
-      } catch(...) { // the user's callback threw: the workers stop, then its exception goes on
+        Worker_progress_scope scope(&progress, &loop);
+        body(t, count * t / threads, count * (t + 1) / threads);
+      } catch(...) {
+        errors[t] = std::current_exception();
+      }
+    },
+    [&] {
+      if(!progress.is_callback_thread()) return;
+      try {
+        progress.call(loop.reports ? double(loop.done.load(std::memory_order_relaxed)) / double(count) : -1., false);
+      } catch(...) {
         if(!errors[threads]) errors[threads] = std::current_exception();
       }
-      lock.lock();
-    }
-    for(std::thread& w : workers) w.join();
-    if(errors[threads]) std::rethrow_exception(errors[threads]); // before the workers' Operation_cancelled
-    for(const std::exception_ptr& e : errors)
-      if(e) std::rethrow_exception(e);
-  }
+    });
+  if(errors[threads]) std::rethrow_exception(errors[threads]);
+  for(const std::exception_ptr& e : errors)
+    if(e) std::rethrow_exception(e);
   if(progress.cancelled()) throw Operation_cancelled();
 }
 
@@ -94,33 +112,22 @@ inline void parallel_for_with_progress(Progress& progress, std::size_t count, un
 // with the thread count: each item's result must depend on the item alone (results summed over
 // items go through parallel_for_chunks(), whose chunks do not depend on the threads). The
 // calling thread runs slice 0 itself: one thread fewer to start, which matters for the many
-// short calls of ISP; the others run on the workers of Worker_pool, or on threads of their own
-// when the pool is busy. The first exception thrown by a body
-// is rethrown in the caller, once every slice is done. Under a callback (progress.h), bodies
-// call parallel_step() after each item, or test stop_requested(), and return when cancelled.
+// short calls of ISP. The first exception thrown by a body is rethrown in the caller, once every
+// slice is done. Under a callback (progress.h), bodies call parallel_step() after each item, or
+// test stop_requested(), and return when cancelled.
 inline void parallel_for(std::size_t count, unsigned threads, Slice_body body)
 {
   threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
   if(active_progress != nullptr)
     return parallel_for_with_progress(*active_progress, count, threads, body);
-  if(threads == 1) {
-    body(0u, std::size_t(0), count);
-    return;
-  }
   std::vector<std::exception_ptr> errors(threads);
-  auto run = [&](unsigned t) {
+  run_slices(threads, [&](unsigned t) {
     try {
       body(t, count * t / threads, count * (t + 1) / threads);
     } catch(...) {
       errors[t] = std::current_exception();
     }
-  };
-  if(!Worker_pool::instance().run(threads, run)) {
-    std::vector<std::thread> workers;
-    for(unsigned t = 1; t < threads; ++t) workers.emplace_back(run, t);
-    run(0u);
-    for(std::thread& w : workers) w.join();
-  }
+  });
   for(const std::exception_ptr& e : errors)
     if(e) std::rethrow_exception(e);
 }

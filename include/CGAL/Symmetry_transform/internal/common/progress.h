@@ -14,10 +14,11 @@
 // passed to the user rise from 0 to 1 in proportion to the work. The user's function is called
 // only on the owner thread, at most every callback_interval_seconds, and at 0 and 1: it needs no
 // locking. When it returns false, the owner throws Operation_cancelled, which the public function
-// catches to return its documented value. Inside parallel_for() the owner waits for the workers
-// while calling the callback; the workers look at an atomic flag (parallel_step(),
-// stop_requested()) and return early. Without a callback nothing is installed: the loops pay one
-// test of a thread-local pointer, and the results are those of a run without progress.
+// catches to return its documented value. Inside parallel_for() the owner runs the first slice,
+// calling the callback as it goes (parallel_step(), parallel_poll(), stop_requested()), then
+// while it waits for the workers; the workers look at an atomic flag and return early. Without a
+// callback nothing is installed: the loops pay one test of a thread-local pointer, and the
+// results are those of a run without progress.
 
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 
@@ -46,6 +47,22 @@ constexpr double callback_interval_seconds = 0.02;
 // the shared counter is touched rarely.
 constexpr std::size_t items_per_check = 64;
 
+// The state of a parallel_for() run under a Progress: items done, published by the workers.
+struct Parallel_progress
+{
+  std::atomic<std::size_t> done{0};
+  std::size_t count = 0;
+  bool reports = false; // its fraction is the owner's report: not nested in another loop's body
+};
+
+// The loop of the current thread's parallel_for() body, with its unpublished items.
+struct Loop_counter
+{
+  Parallel_progress* loop = nullptr;
+  std::size_t pending = 0;
+};
+inline thread_local Loop_counter loop_counter;
+
 class Progress
 {
 public:
@@ -54,7 +71,11 @@ public:
   {}
 
   bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
-  bool on_owner_thread() const { return std::this_thread::get_id() == owner_; }
+  // The thread that calls the callback: the caller of the public function.
+  bool is_callback_thread() const { return std::this_thread::get_id() == owner_; }
+  // The owner outside the bodies of parallel_for(): the stages and the reports of the run are
+  // its; in a body (slice 0 of a loop runs on the caller) it only keeps the callback called.
+  bool on_owner_thread() const { return is_callback_thread() && loop_counter.loop == nullptr; }
 
   // The current stage, as a part [begin, end] of the whole run.
   std::pair<double, double> stage() const { return {begin_, end_}; }
@@ -107,19 +128,27 @@ private:
 // the call that started it); nullptr without a callback.
 inline thread_local Progress* active_progress = nullptr;
 
-// Any thread: whether the user has cancelled the work (false without a callback).
+// Any thread: whether the user has cancelled the work (false without a callback). In a
+// parallel_for() body on the owner, it calls the callback when due.
 inline bool stop_requested()
 {
-  const Progress* progress = active_progress;
-  return progress != nullptr && progress->cancelled();
+  Progress* progress = active_progress;
+  if(progress == nullptr) return false;
+  if(loop_counter.loop != nullptr && progress->is_callback_thread()) progress->call(-1., false);
+  return progress->cancelled();
 }
 
 // On the owner thread: `fraction` of the current stage done. Throws Operation_cancelled once the
-// callback has returned false. Does nothing without a callback, or on a worker.
+// callback has returned false. In a parallel_for() body, the owner only calls the callback when
+// due (the fraction is the loop's); a worker does nothing, nor does anyone without a callback.
 inline void report_progress(double fraction)
 {
   Progress* progress = active_progress;
-  if(progress != nullptr && progress->on_owner_thread()) progress->report(fraction);
+  if(progress == nullptr) return;
+  if(progress->on_owner_thread())
+    progress->report(fraction);
+  else if(progress->is_callback_thread() && !progress->call(-1., false))
+    throw Operation_cancelled();
 }
 
 // The same for item `done` of `count`.
@@ -135,7 +164,7 @@ inline void poll_progress()
 {
   Progress* progress = active_progress;
   if(progress == nullptr) return;
-  if(progress->on_owner_thread() ? !progress->call(-1., false) : progress->cancelled()) throw Operation_cancelled();
+  if(progress->is_callback_thread() ? !progress->call(-1., false) : progress->cancelled()) throw Operation_cancelled();
 }
 
 // In a sequential loop on the owner thread, at item `i` of `count`: reports every
@@ -281,26 +310,20 @@ auto without_progress(const F& f) -> decltype(f())
   struct Pause
   {
     Progress* saved = active_progress;
-    Pause() { active_progress = nullptr; }
-    ~Pause() { active_progress = saved; }
+    Loop_counter saved_counter = loop_counter;
+    Pause()
+    {
+      active_progress = nullptr;
+      loop_counter = {};
+    }
+    ~Pause()
+    {
+      active_progress = saved;
+      loop_counter = saved_counter;
+    }
   } pause;
   return f();
 }
-
-// The state of a parallel_for() run under a Progress: items done, published by the workers.
-struct Parallel_progress
-{
-  std::atomic<std::size_t> done{0};
-  std::size_t count = 0;
-};
-
-// The loop of the current thread's parallel_for() body, with its unpublished items.
-struct Loop_counter
-{
-  Parallel_progress* loop = nullptr;
-  std::size_t pending = 0;
-};
-inline thread_local Loop_counter loop_counter;
 
 // In a parallel_for() body, after each item: false when the work is cancelled, the body then
 // returns at once. Counts the items for the owner's report; `check_every`: 1 for items that take
@@ -312,18 +335,18 @@ inline bool parallel_step(std::size_t check_every = items_per_check)
   const std::size_t done = counter.loop->done.fetch_add(counter.pending, std::memory_order_relaxed) + counter.pending;
   counter.pending = 0;
   Progress* progress = active_progress;
-  if(progress->on_owner_thread()) // a single thread: the owner runs the body itself
-    progress->report(double(done) / double(counter.loop->count));
+  if(progress->is_callback_thread()) // slice 0 of a loop run by the owner
+    progress->call(counter.loop->reports ? double(done) / double(counter.loop->count) : -1., false);
   return !progress->cancelled();
 }
 
 // In a parallel_for() body whose items are not counted (each thread walks its own chunks): false
-// when the work is cancelled. On the owner (a single thread) it keeps the callback called.
+// when the work is cancelled. On the owner it keeps the callback called.
 inline bool parallel_poll()
 {
   Progress* progress = active_progress;
   if(progress == nullptr) return true;
-  if(progress->on_owner_thread() && !progress->call(-1., false)) throw Operation_cancelled();
+  if(progress->is_callback_thread()) progress->call(-1., false);
   return !progress->cancelled();
 }
 

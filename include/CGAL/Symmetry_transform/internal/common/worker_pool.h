@@ -31,6 +31,19 @@ namespace CGAL::Symmetry_transform::internal {
 // work is over.
 constexpr double worker_spin_seconds = 2e-4;
 
+// Waits on `signal` until `ready()`, calling `waiting()` every `interval` seconds meanwhile.
+template <typename Ready>
+void wait_calling(std::mutex& mutex, std::condition_variable& signal, const Ready& ready,
+                  const std::function<void()>& waiting, double interval)
+{
+  std::unique_lock<std::mutex> lock(mutex);
+  while(!signal.wait_for(lock, std::chrono::duration<double>(interval), ready)) {
+    lock.unlock();
+    waiting();
+    lock.lock();
+  }
+}
+
 class Worker_pool
 {
 public:
@@ -48,8 +61,10 @@ public:
   }
 
   // Runs task(t) for every t in [0, threads): t = 0 on the calling thread, the others on workers.
-  // `task` must not throw. Returns false, having run nothing, if the pool is busy.
-  bool run(unsigned threads, const std::function<void(unsigned)>& task)
+  // `task` must not throw. Returns false, having run nothing, if the pool is busy. While the
+  // caller waits for the workers, it calls `waiting` (if any) every `waiting_interval` seconds.
+  bool run(unsigned threads, const std::function<void(unsigned)>& task, const std::function<void()>& waiting = {},
+           double waiting_interval = 0.)
   {
     if(in_worker() || busy_.exchange(true, std::memory_order_acquire)) return false;
     {
@@ -65,7 +80,11 @@ public:
     }
     wake_.notify_all();
     task(0u);
-    wait_until([&] { return pending_.load(std::memory_order_acquire) == 0; }, done_);
+    const auto finished = [&] { return pending_.load(std::memory_order_acquire) == 0; };
+    if(waiting)
+      wait_calling(mutex_, done_, finished, waiting, waiting_interval);
+    else
+      wait_until(finished, done_);
     busy_.store(false, std::memory_order_release);
     return true;
   }
