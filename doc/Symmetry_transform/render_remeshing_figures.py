@@ -76,10 +76,14 @@ def load(path):
     return reader.GetOutput()
 
 
-def surface_actor(mesh):
+def surface_actor(mesh, on_points=False, edge_width=1.0):
+    """The surface in the colours of its faces (or of its vertices, `on_points`), edges drawn."""
     mapper = vtk.vtkPolyDataMapper()
     mapper.SetInputData(mesh)
-    mapper.SetScalarModeToUseCellFieldData()
+    if on_points:
+        mapper.SetScalarModeToUsePointFieldData()
+    else:
+        mapper.SetScalarModeToUseCellFieldData()
     mapper.SelectColorArray("RGBA")
     mapper.SetColorModeToDirectScalars()
     actor = vtk.vtkActor()
@@ -89,7 +93,7 @@ def surface_actor(mesh):
     prop.SetDiffuse(0.75)
     prop.EdgeVisibilityOn()
     prop.SetEdgeColor(0.12, 0.12, 0.12)
-    prop.SetLineWidth(1.0)
+    prop.SetLineWidth(edge_width)
     return actor
 
 

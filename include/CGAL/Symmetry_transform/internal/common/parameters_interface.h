@@ -40,3 +40,7 @@ CGAL_add_named_parameter(st_number_of_directions_t, st_number_of_directions, num
 
 // Rotational symmetries (rotational_symmetries.h)
 CGAL_add_named_parameter(st_max_order_t, st_max_order, max_order)
+
+// Symmetrization (symmetrization.h)
+CGAL_add_named_parameter(st_vertex_displacement_map_t, st_vertex_displacement_map, vertex_displacement_map)
+CGAL_add_named_parameter(st_whole_mesh_t, st_whole_mesh, whole_mesh)

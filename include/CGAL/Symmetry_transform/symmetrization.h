@@ -1,0 +1,231 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_SYMMETRIZATION_H
+#define CGAL_SYMMETRY_TRANSFORM_SYMMETRIZATION_H
+
+#include <CGAL/Symmetry_transform/Principal_symmetry.h>
+#include <CGAL/Symmetry_transform/Rotational_symmetry.h>
+#include <CGAL/Symmetry_transform/geom_traits.h>
+#include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
+#include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/symmetrization/mesh_arrays.h>
+#include <CGAL/Symmetry_transform/internal/symmetrization/symmetrize_vertices.h>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL::Symmetry_transform {
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * What `symmetrize()` did: the symmetries that the mesh now has exactly, and how far it moved.
+ * \tparam GeomTraits a model of `Kernel`
+ */
+template <typename GeomTraits>
+struct Symmetrization
+{
+  /// The mirror planes of the result, one per plane given, in the same order: each is the given
+  /// plane fitted to the vertex pairs it makes (the least squares), then moved by the least that
+  /// makes all the symmetries one exact group; within hundredths of a degree of a detected plane.
+  std::vector<typename GeomTraits::Plane_3> planes;
+  /// The rotational symmetries of the result, one per rotation given, as the planes.
+  std::vector<Rotational_symmetry<GeomTraits>> rotations;
+  /// The number of motions of the group that the symmetries generate (2 for one plane, 48 for
+  /// the nine planes of a cube).
+  std::size_t group_size = 0;
+  /// The vertices whose images under the group lie on vertices (within half the shortest edge
+  /// there): these are placed exactly symmetric, each orbit at its mean, the least displacement.
+  std::size_t paired_vertices = 0;
+  /// The mean displacement of a vertex.
+  typename GeomTraits::FT mean_displacement = 0;
+  /// The largest displacement of a vertex.
+  typename GeomTraits::FT max_displacement = 0;
+};
+
+namespace internal {
+
+template <typename T>
+struct Is_rotation_range : std::false_type
+{};
+template <typename GT, typename Allocator>
+struct Is_rotation_range<std::vector<Rotational_symmetry<GT>, Allocator>> : std::true_type
+{};
+
+// The motions of the planes, then of the rotations, in the local frame.
+template <typename PlaneRange, typename RotationRange>
+std::vector<Rigid_motion> generators_in(const Local_frame& frame, const PlaneRange& planes, const RotationRange& rotations)
+{
+  std::vector<Rigid_motion> generators;
+  for(const auto& p : planes) generators.push_back(frame.to_local(reflection(to_dplane(plane_of(p)))));
+  for(const auto& r : rotations) generators.push_back(frame.to_local(rotation_generator(r)));
+  if(generators.empty()) throw std::invalid_argument("Symmetry_transform: no symmetry given to symmetrize with");
+  return generators;
+}
+
+// The exact symmetries of the result, in the user's frame, each on the side of the one given.
+template <typename GT, typename PlaneRange, typename RotationRange>
+void exact_symmetries(const Symmetrized_vertices& s, const Local_frame& frame, const PlaneRange& planes,
+                      const RotationRange& rotations, Symmetrization<GT>& result)
+{
+  std::size_t k = 0;
+  for(const auto& p : planes) {
+    const Rigid_motion m = frame.to_input(s.motions[s.generator_element[k++]]);
+    result.planes.push_back(to_plane<GT>(mirror_of(m, to_dplane(plane_of(p)).normal)));
+  }
+  for(Rotational_symmetry<GT> r : rotations) {
+    const Rigid_motion m = frame.to_input(s.motions[s.generator_element[k++]]);
+    if(r.order > 1) {
+      const Eigen::Vector3d given = to_eigen(to_dpoint(CGAL::ORIGIN + r.axis.to_vector()));
+      const auto [direction, point] = axis_of(m, given, to_eigen(to_dpoint(r.axis.point(0))));
+      r.axis = typename GT::Line_3(to_point<GT>(point), to_vector<GT>(direction));
+    }
+    result.rotations.push_back(r);
+  }
+}
+
+template <typename GT, typename TriangleMesh, typename PlaneRange, typename RotationRange, typename NamedParameters>
+Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, const RotationRange& rotations,
+                                   const NamedParameters& np)
+{
+  const unsigned threads = read_number_of_threads(np);
+  const bool whole = parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_whole_mesh), false);
+  Mesh_arrays mesh = mesh_arrays(tm, np);
+  const Local_frame frame = local_frame(mesh.points);
+  const std::vector<Rigid_motion> generators = generators_in(frame, planes, rotations);
+  for(Eigen::Vector3d& p : mesh.points) p = frame.to_local(p);
+  const std::optional<Symmetrized_vertices> s = with_progress(
+    np, [&] { return std::optional(symmetrize_vertices(mesh.points, mesh.faces, generators, whole, threads)); },
+    [] { return std::optional<Symmetrized_vertices>(); });
+  Symmetrization<GT> result;
+  if(!s) return result;
+  exact_symmetries(*s, frame, planes, rotations, result);
+  result.group_size = s->motions.size();
+  result.paired_vertices = std::size_t(std::count(s->paired.begin(), s->paired.end(), true));
+  auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                          get_property_map(CGAL::vertex_point, tm));
+  std::size_t i = 0;
+  double sum = 0., largest = 0.;
+  for(auto v : vertices(tm)) {
+    const Eigen::Vector3d displacement = frame.radius * (s->points[i] - mesh.points[i]);
+    put(vpm, v, to_point<GT>(frame.to_input(s->points[i++])));
+    sum += displacement.norm();
+    largest = (std::max)(largest, displacement.norm());
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_vertex_displacement_map_t>::value)
+      put(parameters::get_parameter(np, internal_np::st_vertex_displacement_map), v, to_vector<GT>(displacement));
+  }
+  result.mean_displacement = sum / double(i);
+  result.max_displacement = largest;
+  return result;
+}
+
+} // namespace internal
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * Moves the vertices of `tm` so that its surface becomes symmetric under the mirror planes
+ * `planes` (and the rotations of `rotations`), each vertex as little as possible: every vertex and
+ * the images of its counterparts meet at their mean (Golovinskiy, Podolak and Funkhouser,
+ * "Symmetry-Aware Mesh Processing", 2009). The faces and the order of the vertices are unchanged.
+ *
+ * The symmetries generate a finite group of motions (two for one plane, 48 for the nine planes of
+ * a cube, \f$ 2k \f$ for a plane through a \f$ k \f$-fold axis), made exact first: planes
+ * detected to a hundredth of a degree meet at angles of a group only to that precision (the
+ * symmetries of the result are returned). A vertex whose images under the group lie on vertices,
+ * as on a mesh modelled symmetric and then edited, takes the mean of its orbit: the result is
+ * symmetric to rounding, and the displacement the least in the sum of squares (a mirror pair
+ * meets halfway). The other vertices take the mean of the images of the closest points of the
+ * surface to their images, a few times over, with their displacement smoothed so that neighbours
+ * move alike: the surface then becomes nearly symmetric.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \tparam RotationRange a `std::vector` of `Rotational_symmetry<GT>`
+ * \param tm the mesh, modified
+ * \param planes the mirror planes (possibly none)
+ * \param rotations the rotational symmetries, each of order at least 1 (a continuous symmetry,
+ *        order 0, has no finite group: give it an order)
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{whole_mesh}
+ *     \cgalParamDescription{whether every vertex moves; if `false`, only where the symmetries hold: a vertex moves fully if its images lie within 5 % of the radius of the surface, not at all if one lies beyond 15 %, and in part in between (a raised arm with no counterpart stays where it is)}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_displacement_map}
+ *     \cgalParamDescription{receives the displacement of each vertex}
+ *     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `GT::Vector_3` as value type}
+ *     \cgalParamDefault{none}
+ *   \cgalParamNEnd
+ *   \cgalParamThreads{the threads of the closest-point searches\, at most 1024 (0: the default); they change the speed only\, never the result}
+ *   \cgalParamCallback{the empty `Symmetrization`\, the mesh unchanged}
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+ *     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+ *     \cgalParamDefault{an automatically indexed internal map}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a model of `Kernel`}
+ *     \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ * \returns the symmetries of the result, the group's size, the paired vertices and the
+ *          displacement
+ * \throws std::invalid_argument on a mesh with no face, a face that is not a triangle, a non-finite
+ *         coordinate, no symmetry given, a degenerate plane or axis, a rotation of order 0, or
+ *         symmetries that generate no finite group of at most 120 motions
+ */
+template <typename TriangleMesh, typename PlaneRange, typename RotationRange,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<internal::Is_rotation_range<RotationRange>::value, int> = 0
+#endif
+          >
+Symmetrization<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>
+symmetrize(TriangleMesh& tm, const PlaneRange& planes, const RotationRange& rotations,
+           const NamedParameters& np = parameters::default_values())
+{
+  return internal::symmetrize_mesh<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>(tm, planes, rotations, np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * `symmetrize()` with mirror planes only, as `detect_principal_symmetries()` returns them.
+ *
+ * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \param tm the mesh, modified
+ * \param planes the mirror planes, at least one
+ * \param np the named parameters of `symmetrize()`
+ * \returns the planes of the result, the group's size, the paired vertices and the displacement
+ * \throws std::invalid_argument as `symmetrize()`
+ */
+template <typename TriangleMesh, typename PlaneRange, typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<!internal::Is_rotation_range<NamedParameters>::value, int> = 0
+#endif
+          >
+Symmetrization<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>
+symmetrize(TriangleMesh& tm, const PlaneRange& planes, const NamedParameters& np = parameters::default_values())
+{
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
+  return internal::symmetrize_mesh<GT>(tm, planes, std::vector<Rotational_symmetry<GT>>(), np);
+}
+
+} // namespace CGAL::Symmetry_transform
+
+#endif // CGAL_SYMMETRY_TRANSFORM_SYMMETRIZATION_H
