@@ -23,6 +23,7 @@
 #include <CGAL/Symmetry_transform/symmetry_descriptor.h>
 #include <CGAL/Symmetry_transform/symmetry_measure.h>
 #include <CGAL/Symmetry_transform/symmetry_segmentation.h>
+#include <CGAL/Symmetry_transform/symmetrization.h>
 #include <CGAL/Symmetry_transform/viewpoint_selection.h>
 
 #include "Symmetry_transform_test_shapes.h"
@@ -548,6 +549,29 @@ TEST(ExactKernel, SegmentationKeepsTheEllipsoidWholeAsWithEpick)
   EXPECT_EQ(tree.segments[0].status, ST::Segment_status::NO_PARTIAL_SYMMETRY);
   ASSERT_FALSE(tree.segments[0].planes.empty());
   for(double x : tree.segments[0].reflected_fractions) EXPECT_GT(x, 0.9);
+}
+
+// The ellipsoid with the vertices of one side moved, symmetrized about x = 0 and z = 0: the same
+// vertices as with Epick, and exactly symmetric.
+TEST(ExactKernel, SymmetrizationMovesTheVerticesAsWithEpick)
+{
+  Mesh mesh = ellipsoid().mesh;
+  CGAL::Random rng(2);
+  for(Mesh::Vertex_index v : vertices(mesh))
+    if(mesh.point(v).x() > 1e-9)
+      mesh.point(v) = mesh.point(v) + 0.002 * IK::Vector_3(st_test::gaussian(rng), st_test::gaussian(rng), st_test::gaussian(rng));
+  Exact_mesh exact_mesh = rebuilt<Exact_mesh>(mesh);
+  const auto exact = ST::symmetrize(exact_mesh, std::vector<EK::Plane_3>{EK::Plane_3(1, 0, 0, 0), EK::Plane_3(0, 0, 1, 0)});
+  const auto inexact = ST::symmetrize(mesh, std::vector<IK::Plane_3>{IK::Plane_3(1, 0, 0, 0), IK::Plane_3(0, 0, 1, 0)});
+  EXPECT_EQ(exact.group_size, 4u);
+  EXPECT_EQ(exact.paired_vertices, num_vertices(mesh));
+  EXPECT_EQ(exact.paired_vertices, inexact.paired_vertices);
+  EXPECT_NEAR(CGAL::to_double(exact.max_displacement), inexact.max_displacement, same);
+  for(Mesh::Vertex_index v : vertices(mesh))
+    for(int i = 0; i < 3; ++i) EXPECT_NEAR(CGAL::to_double(exact_mesh.point(v)[i]), mesh.point(v)[i], same);
+  ASSERT_EQ(exact.planes.size(), 2u);
+  EXPECT_LE(ST::symmetry_distance_error(exact_mesh, exact.planes[0]), 1e-6);
+  EXPECT_LE(ST::symmetry_distance_error(exact_mesh, exact.planes[1]), 1e-6);
 }
 
 // The triangle soup forms, on the box's faces as a soup of Epeck points, the point-set detection

@@ -22,6 +22,8 @@
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
+#include <boost/property_map/function_property_map.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -405,6 +407,37 @@ TEST(Symmetrization, PolyhedronAgreesWithSurfaceMeshAndDisplacementsAreWritten)
   for(auto v : vertices(shape.mesh)) {
     EXPECT_LT(std::sqrt((displacement[v] - (shape.mesh.point(v) - before[i++])).squared_length()), 1e-12);
   }
+}
+
+TEST(Symmetrization, AnyVertexIndexMapAndUncollectedGarbageGiveTheSameMeshAndBadIndicesAreRefused)
+{
+  CGAL::Random rng(6);
+  Shape<Surface_mesh> shape = ellipsoid<Surface_mesh>(1., 0.8, 0.6, 2);
+  perturb_one_side(shape.mesh, shape.planes[0], Perturbation::noise, rng);
+  Surface_mesh reversed = shape.mesh;
+  const std::size_t n = num_vertices(reversed);
+  const auto reverse = boost::make_function_property_map<Surface_mesh::Vertex_index, std::size_t>(
+    [n](Surface_mesh::Vertex_index v) { return n - 1 - std::size_t(v); });
+  ST::symmetrize(shape.mesh, shape.planes);
+  ST::symmetrize(reversed, shape.planes, CGAL::parameters::vertex_index_map(reverse));
+  for(auto v : vertices(reversed)) {
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(shape.mesh.point(v), reversed.point(v))), 1e-12);
+  }
+  Surface_mesh with_garbage = shape.mesh; // a removed vertex, not collected: the last index is num_vertices
+  const auto removed = with_garbage.add_vertex(Point_3(0, 0, 0));
+  with_garbage.add_vertex(Point_3(0, 0, 0.1));
+  with_garbage.remove_vertex(removed);
+  Surface_mesh collected = with_garbage;
+  collected.collect_garbage();
+  const auto beyond = boost::make_function_property_map<Surface_mesh::Vertex_index, std::size_t>(
+    [n](Surface_mesh::Vertex_index v) { return n + std::size_t(v); });
+  EXPECT_TRUE(throws_with_message<std::invalid_argument>(
+    [&] { ST::symmetrize(collected, shape.planes, CGAL::parameters::vertex_index_map(beyond)); }, "vertex_index_map"));
+  ST::symmetrize(with_garbage, shape.planes);
+  ST::symmetrize(collected, shape.planes);
+  const std::vector<Point_3> a = points_of(with_garbage), b = points_of(collected);
+  ASSERT_EQ(a.size(), b.size());
+  for(std::size_t i = 0; i < a.size(); ++i) EXPECT_LT(std::sqrt(CGAL::squared_distance(a[i], b[i])), 1e-12);
 }
 
 TEST(Symmetrization, CancelLeavesTheMeshUnchanged)

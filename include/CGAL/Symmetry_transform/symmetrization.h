@@ -33,7 +33,8 @@ struct Symmetrization
 {
   /// The mirror planes of the result, one per plane given, in the same order: each is the given
   /// plane fitted to the vertex pairs it makes (the least squares), then moved by the least that
-  /// makes all the symmetries one exact group; within hundredths of a degree of a detected plane.
+  /// makes all the symmetries one exact group. Hundredths of a degree from a plane detected on a
+  /// noisy mesh; tenths where one side is bent as a whole, which the fitted plane follows halfway.
   std::vector<typename GeomTraits::Plane_3> planes;
   /// The rotational symmetries of the result, one per rotation given, as the planes.
   std::vector<Rotational_symmetry<GeomTraits>> rotations;
@@ -110,17 +111,18 @@ Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, c
   result.paired_vertices = std::size_t(std::count(s->paired.begin(), s->paired.end(), true));
   auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                           get_property_map(CGAL::vertex_point, tm));
-  std::size_t i = 0;
+  const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
   double sum = 0., largest = 0.;
   for(auto v : vertices(tm)) {
+    const std::size_t i = vertex_index(tm, index, v);
     const Eigen::Vector3d displacement = frame.radius * (s->points[i] - mesh.points[i]);
-    put(vpm, v, to_point<GT>(frame.to_input(s->points[i++])));
+    put(vpm, v, to_point<GT>(frame.to_input(s->points[i])));
     sum += displacement.norm();
     largest = (std::max)(largest, displacement.norm());
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_vertex_displacement_map_t>::value)
       put(parameters::get_parameter(np, internal_np::st_vertex_displacement_map), v, to_vector<GT>(displacement));
   }
-  result.mean_displacement = sum / double(i);
+  result.mean_displacement = sum / double(mesh.points.size());
   result.max_displacement = largest;
   return result;
 }

@@ -31,9 +31,22 @@ namespace CGAL::Symmetry_transform::internal {
 
 struct Mesh_arrays
 {
-  std::vector<Eigen::Vector3d> points; // in the order of vertices(tm)
+  std::vector<Eigen::Vector3d> points; // by the vertex index map
   std::vector<std::array<std::size_t, 3>> faces;
 };
+
+// The index of vertex v in [0, num_vertices(tm)); throws otherwise (a vertex_index_map of the
+// user that numbers the vertices otherwise).
+template <typename TriangleMesh, typename VertexIndexMap>
+std::size_t vertex_index(const TriangleMesh& tm, const VertexIndexMap& index,
+                         typename boost::graph_traits<TriangleMesh>::vertex_descriptor v)
+{
+  const std::size_t i = std::size_t(get(index, v));
+  if(i >= num_vertices(tm))
+    throw std::invalid_argument("Symmetry_transform: the vertex_index_map gives an index not below the number of "
+                                "vertices");
+  return i;
+}
 
 // Throws on a mesh with no face, a face that is not a triangle, or a non-finite coordinate.
 template <typename TriangleMesh, typename NamedParameters>
@@ -42,8 +55,8 @@ Mesh_arrays mesh_arrays(const TriangleMesh& tm, const NamedParameters& np)
   const auto vpm = vertex_point_map(tm, np);
   const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
   Mesh_arrays mesh;
-  mesh.points.reserve(num_vertices(tm));
-  for(auto v : vertices(tm)) mesh.points.push_back(to_eigen(to_dpoint(get(vpm, v))));
+  mesh.points.resize(num_vertices(tm));
+  for(auto v : vertices(tm)) mesh.points[vertex_index(tm, index, v)] = to_eigen(to_dpoint(get(vpm, v)));
   for(auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
     if(!CGAL::is_triangle(h, tm))
