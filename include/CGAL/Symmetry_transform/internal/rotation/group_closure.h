@@ -37,14 +37,6 @@ namespace CGAL::Symmetry_transform::internal {
 constexpr double closure_angle_tolerance = 0.01;
 constexpr double closure_screw_tolerance = 0.01;
 
-inline Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a after b
-{
-  Rigid_motion r;
-  r.linear = a.linear * b.linear;
-  r.translation = a.linear * b.translation + a.translation;
-  return r;
-}
-
 // The axis of a rotation, through its point nearest to `center`, with the order n <= max_order
 // of its angle 2 pi m / n (m, n coprime), or 0 for an angle that is no such fraction (the powers
 // of that rotation are dense: of symmetries, a continuous axis, such as two flips of a cylinder

@@ -42,6 +42,22 @@ struct Rigid_motion
   }
 };
 
+inline Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a after b
+{
+  Rigid_motion r;
+  r.linear = a.linear * b.linear;
+  r.translation = a.linear * b.translation + a.translation;
+  return r;
+}
+
+inline Rigid_motion inverse(const Rigid_motion& a) // of an isometry
+{
+  Rigid_motion r;
+  r.linear = a.linear.transpose();
+  r.translation = -(r.linear * a.translation);
+  return r;
+}
+
 // The rotation by `angle` (radians, counterclockwise seen from the tip of `direction`) about the
 // line through `point` along the unit vector `direction` (Rodrigues' formula).
 inline Rigid_motion rotation_about(const Eigen::Vector3d& point, const Eigen::Vector3d& direction, double angle)

@@ -40,15 +40,10 @@ public:
       for(std::size_t v : faces[f]) around_[next[v]++] = f;
   }
 
-  // The closest point to q of the faces around the input vertex nearest to q, at `points`.
-  Eigen::Vector3d closest(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points) const
-  {
-    return closest_around(q, points, nearest_(q).index);
-  }
-
-  // The same from `vertex`, the answer of a query nearby (the same point's image at the previous
-  // step): a walk to ever nearer neighbours instead of a search in the Kd-tree (no_vertex: search).
-  // `vertex` becomes the vertex reached.
+  // The closest point to q of the faces around the vertex nearest to q, at `points`, found from
+  // `vertex`, the answer of a query nearby (the same point's image at the previous step): a walk
+  // to ever nearer neighbours instead of a search in the Kd-tree (`unknown`: a search). `vertex`
+  // becomes the vertex reached.
   Eigen::Vector3d closest(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points,
                           std::size_t& vertex) const
   {

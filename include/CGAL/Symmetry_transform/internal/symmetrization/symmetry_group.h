@@ -50,22 +50,6 @@ inline double motion_distance(const Rigid_motion& a, const Rigid_motion& b)
   return d;
 }
 
-inline Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a after b
-{
-  Rigid_motion r;
-  r.linear = a.linear * b.linear;
-  r.translation = a.linear * b.translation + a.translation;
-  return r;
-}
-
-inline Rigid_motion inverse(const Rigid_motion& a)
-{
-  Rigid_motion r;
-  r.linear = a.linear.transpose();
-  r.translation = -(r.linear * a.translation);
-  return r;
-}
-
 // The index of the element within same_motion_tolerance of `m`, or motions.size().
 inline std::size_t element_of(const std::vector<Rigid_motion>& motions, const Rigid_motion& m)
 {

@@ -16,6 +16,7 @@
 #include <CGAL/Symmetry_transform/internal/symmetrization/symmetry_group.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 
 #include <algorithm>
@@ -139,25 +140,24 @@ inline std::vector<bool> consistent_vertices(const std::vector<std::vector<std::
   return consistent;
 }
 
-// The motion of determinant's sign `sign` that maps the points x_i onto y_i best in the least
-// squares (Kabsch), over the pairs (x_i, y_i = points[image[i]]) of the vertices where `use`.
+// The motion whose linear part has the determinant of `given`'s that maps the points x_i onto
+// y_i = points[image[i]] best in the least squares, over the vertices where `use`: Eigen's
+// umeyama() fits the rotation Q from given.linear x_i to y_i, and Q given.linear keeps the
+// determinant (a reflection stays one).
 inline Rigid_motion fitted_motion(const std::vector<Eigen::Vector3d>& points, const std::vector<std::size_t>& image,
-                                  const std::vector<bool>& use, double sign)
+                                  const std::vector<bool>& use, const Rigid_motion& given)
 {
-  Eigen::Vector3d cx = Eigen::Vector3d::Zero(), cy = Eigen::Vector3d::Zero();
-  std::size_t count = 0;
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(use[i]) cx += points[i], cy += points[image[i]], ++count;
-  cx /= double(count), cy /= double(count);
-  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
-  for(std::size_t i = 0; i < points.size(); ++i)
-    if(use[i]) h += (points[i] - cx) * (points[image[i]] - cy).transpose();
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
-  d(2, 2) = sign * (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0. ? -1. : 1.;
+  const auto count = Eigen::Index(std::count(use.begin(), use.end(), true));
+  Eigen::Matrix3Xd from(3, count), to(3, count);
+  for(std::size_t i = 0, k = 0; i < points.size(); ++i)
+    if(use[i]) {
+      from.col(Eigen::Index(k)) = given.linear * points[i];
+      to.col(Eigen::Index(k++)) = points[image[i]];
+    }
+  const Eigen::Matrix4d fit = Eigen::umeyama(from, to, false);
   Rigid_motion m;
-  m.linear = svd.matrixV() * d * svd.matrixU().transpose();
-  m.translation = cy - m.linear * cx;
+  m.linear = fit.topLeftCorner<3, 3>() * given.linear;
+  m.translation = fit.topRightCorner<3, 1>();
   return m;
 }
 
@@ -187,7 +187,7 @@ inline void refit_motions(Symmetry_group& group, const std::vector<Eigen::Vector
 {
   if(!pairs_fix_a_motion(points, paired)) return;
   for(std::size_t g = 1; g < group.motions.size(); ++g)
-    group.motions[g] = fitted_motion(points, permutation[g], paired, group.motions[g].linear.determinant());
+    group.motions[g] = fitted_motion(points, permutation[g], paired, group.motions[g]);
 }
 
 // The orbit average of vertex i: the mean over the group of g^-1(points[perm_g(i)]). On a
