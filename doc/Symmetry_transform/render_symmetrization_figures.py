@@ -14,7 +14,10 @@ scripts/setup.sh, which it calls if needed) with the strongest plane detected at
 and renders doc/Symmetry_transform/fig/symmetrization.png: one row per mesh, the input beside the
 symmetrized mesh, both with their vertices coloured by the displacement (dark blue 0, yellow 1 %
 of the radius or more), edges drawn, the plane's trace on the surface in red. MESH names files of
-DIR/data/meshes without ".off" (default: cow bull).
+DIR/data/meshes without ".off" (default: cow bull). It then builds complete_by_symmetry, runs it on
+DIR/data/points_3/oni.pwn with the points of one side removed (x < -0.08, y > 0.05: 262 of 1435)
+and renders doc/Symmetry_transform/fig/completion.png: that input beside the completed set, the
+added points orange.
 
 Re-running it overwrites the figure. Debian packages: as for render_figures.py (whose helpers it
 reuses, with those of render_application_figures.py and render_remeshing_figures.py),
@@ -38,11 +41,11 @@ PANEL_W, PANEL_H, LEGEND_H = rrf.PANEL_W, rrf.PANEL_H, rrf.LEGEND_H
 RAMP = rrf.RAMP
 
 
-def build_program(build_dir):
-    """Configures DIR and unpacks the data as render_figures.py does, then builds symmetrize."""
+def build_program(build_dir, name):
+    """Configures DIR and unpacks the data as render_figures.py does, then builds the program `name`."""
     _, data_dir = rf.build_example(build_dir)
-    rf.run(["cmake", "--build", build_dir, "--target", "symmetrize", "-j", str(os.cpu_count() or 2)])
-    return os.path.join(build_dir, "demo", "Symmetry_transform", "symmetrize"), data_dir
+    rf.run(["cmake", "--build", build_dir, "--target", name, "-j", str(os.cpu_count() or 2)])
+    return os.path.join(build_dir, "demo", "Symmetry_transform", name), data_dir
 
 
 def parse_run(out):
@@ -55,20 +58,27 @@ def parse_run(out):
     return plane, mean, before, after
 
 
-def panel(window, mesh, plane, caption, column, row, rows, camera):
-    height = rows * PANEL_H + LEGEND_H
+def panel(window, actors, caption, viewport, camera):
+    """A framed renderer of `actors` with a caption, in `viewport` (x0, y0, x1, y1) of the window."""
     ren = vtk.vtkRenderer()
     ren.SetBackground(1, 1, 1)
-    ren.SetViewport(column / 2., (LEGEND_H + (rows - 1 - row) * PANEL_H) / height,
-                    (column + 1) / 2., (LEGEND_H + (rows - row) * PANEL_H) / height)
+    ren.SetViewport(*viewport)
     ren.SetUseFXAA(True)
-    ren.AddActor(rrf.surface_actor(mesh, on_points=True, edge_width=0.6))
-    ren.AddActor(rrf.trace_actor(mesh, plane))
+    for actor in actors:
+        ren.AddActor(actor)
     ren.AddActor2D(rf.text(caption, 15, 10, PANEL_H - 24, background=True))
     ren.AddActor2D(rf.rectangle((0.8, 0.8, 0.8), 0, 0, PANEL_W - 1, PANEL_H - 1, filled=False))
     ren.SetActiveCamera(camera)
     window.AddRenderer(ren)
     return ren
+
+
+def mesh_panel(window, mesh, plane, caption, column, row, rows, camera):
+    height = rows * PANEL_H + LEGEND_H
+    viewport = (column / 2., (LEGEND_H + (rows - 1 - row) * PANEL_H) / height,
+                (column + 1) / 2., (LEGEND_H + (rows - row) * PANEL_H) / height)
+    actors = [rrf.surface_actor(mesh, on_points=True, edge_width=0.6), rrf.trace_actor(mesh, plane)]
+    return panel(window, actors, caption, viewport, camera)
 
 
 def camera_for(name, mesh):
@@ -94,8 +104,8 @@ def render_figure(runs, png):
     for r, (name, before_ply, after_ply, (plane, mean, before, after)) in enumerate(runs):
         before_mesh, after_mesh = rrf.load(before_ply), rrf.load(after_ply)
         camera, bounds, zoom = camera_for(name, before_mesh)
-        first = panel(window, before_mesh, plane, "%s: SDE %.2g" % (name, before), 0, r, rows, camera)
-        panel(window, after_mesh, plane, "symmetrized: SDE %.2g, mean move %.2g R" % (after, mean), 1, r, rows, camera)
+        first = mesh_panel(window, before_mesh, plane, "%s: SDE %.2g" % (name, before), 0, r, rows, camera)
+        mesh_panel(window, after_mesh, plane, "symmetrized: SDE %.2g, mean move %.2g R" % (after, mean), 1, r, rows, camera)
         first.ResetCamera(bounds)
         camera.Zoom(zoom)
     names = ".off, ".join(name for name, _, _, _ in runs)  # the legend adds the last ".off"
@@ -105,13 +115,66 @@ def render_figure(runs, png):
     raf.save(window, png)
 
 
+def partial_oni(data_dir, path):
+    """oni.pwn without the points of one side: x < -0.08 and y > 0.05."""
+    with open(os.path.join(data_dir, "points_3", "oni.pwn")) as f, open(path, "w") as out:
+        for line in f:
+            x, y = (float(v) for v in line.split()[:2])
+            if not (x < -0.08 and y > 0.05):
+                out.write(line)
+
+
+def points_actor(ply):
+    glyphs = vtk.vtkVertexGlyphFilter()
+    glyphs.SetInputData(rrf.load(ply))
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(glyphs.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectColorArray("RGBA")
+    mapper.SetColorModeToDirectScalars()
+    actor = vtk.vtkActor()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetPointSize(5)
+    actor.GetProperty().LightingOff()  # the colours as written: grey input, orange added
+    return actor
+
+
+def render_completion(input_ply, completed_ply, added, png):
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    window.SetSize(2 * PANEL_W, PANEL_H)
+    camera = vtk.vtkCamera()
+    camera.SetPosition(0.9, 0.4, 2.5)
+    camera.SetViewUp(0, 1, 0)
+    for column, (ply, caption) in enumerate([(input_ply, "oni.pwn, part of one side removed"),
+                                             (completed_ply, "completed: %d points added (orange)" % added)]):
+        ren = panel(window, [points_actor(ply)], caption, (column / 2., 0, (column + 1) / 2., 1), camera)
+        if column == 0:
+            ren.ResetCamera()
+    raf.save(window, png)
+
+
+def completion_figure(build_dir, work):
+    program, data_dir = build_program(build_dir, "complete_by_symmetry")
+    partial = os.path.join(work, "oni_partial.xyz")
+    partial_oni(data_dir, partial)
+    input_ply, completed_ply = os.path.join(work, "oni_partial.ply"), os.path.join(work, "oni_completed.ply")
+    # The input alone, as the program writes it when nothing is added (coverage of the whole radius).
+    rf.run([program, partial, "--coverage", "2", "--output", input_ply], stdout=subprocess.PIPE)
+    out = rf.run([program, partial, "--output", completed_ply], stdout=subprocess.PIPE, text=True).stdout
+    sys.stdout.write(out)
+    added = int(re.search(r"(\d+) points added", out).group(1))
+    render_completion(input_ply, completed_ply, added, os.path.join(FIG_DIR, "completion.png"))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("meshes", nargs="*", default=["cow", "bull"])
     parser.add_argument("--build-dir", default=os.path.join(ROOT, "build"))
     args = parser.parse_args()
 
-    program, data_dir = build_program(os.path.abspath(args.build_dir))
+    program, data_dir = build_program(os.path.abspath(args.build_dir), "symmetrize")
     work = os.path.join(os.path.abspath(args.build_dir), "doc_figures")
     os.makedirs(work, exist_ok=True)
     os.makedirs(FIG_DIR, exist_ok=True)
@@ -123,6 +186,7 @@ def main():
         sys.stdout.write(out)
         runs.append((name, output[:-4] + "_before.ply", output, parse_run(out)))
     render_figure(runs, os.path.join(FIG_DIR, "symmetrization.png"))
+    completion_figure(os.path.abspath(args.build_dir), work)
 
 
 if __name__ == "__main__":

@@ -574,6 +574,40 @@ TEST(ExactKernel, SymmetrizationMovesTheVerticesAsWithEpick)
   EXPECT_LE(ST::symmetry_distance_error(exact_mesh, exact.planes[1]), 1e-6);
 }
 
+// The ellipsoid's vertices with x < 0.3 (with the faces among them, for the mesh) completed about
+// x = 0: the same points and faces added as with Epick.
+TEST(ExactKernel, CompletionAddsWhatItAddsWithEpick)
+{
+  const Mesh mesh = ellipsoid().mesh;
+  std::vector<IK::Point_3> points;
+  std::vector<EK::Point_3> exact_points;
+  for(Mesh::Vertex_index v : vertices(mesh))
+    if(mesh.point(v).x() < 0.3) {
+      points.push_back(mesh.point(v));
+      exact_points.push_back(EK::Point_3(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()));
+    }
+  std::vector<std::pair<IK::Point_3, IK::Vector_3>> added;
+  std::vector<std::pair<EK::Point_3, EK::Vector_3>> exact_added;
+  ST::complete_by_symmetry_of_points(points, std::vector<IK::Plane_3>{IK::Plane_3(1, 0, 0, 0)}, std::back_inserter(added));
+  ST::complete_by_symmetry_of_points(exact_points, std::vector<EK::Plane_3>{EK::Plane_3(1, 0, 0, 0)},
+                                     std::back_inserter(exact_added));
+  ASSERT_EQ(added.size(), exact_added.size());
+  EXPECT_GT(added.size(), 0u);
+  for(std::size_t i = 0; i < added.size(); ++i)
+    for(int k = 0; k < 3; ++k) EXPECT_NEAR(CGAL::to_double(exact_added[i].first[k]), added[i].first[k], same);
+  Mesh cut = mesh;
+  for(Mesh::Face_index f : faces(mesh))
+    if(mesh.point(target(halfedge(f, mesh), mesh)).x() > 0.3) CGAL::Euler::remove_face(halfedge(f, cut), cut);
+  Exact_mesh exact_cut = rebuilt<Exact_mesh>(cut);
+  std::vector<Mesh::Face_index> faces_added;
+  std::vector<Exact_mesh::Face_index> exact_faces_added;
+  ST::complete_by_symmetry(cut, std::vector<IK::Plane_3>{IK::Plane_3(1, 0, 0, 0)}, std::back_inserter(faces_added));
+  ST::complete_by_symmetry(exact_cut, std::vector<EK::Plane_3>{EK::Plane_3(1, 0, 0, 0)},
+                           std::back_inserter(exact_faces_added));
+  EXPECT_GT(faces_added.size(), 0u);
+  EXPECT_EQ(faces_added.size(), exact_faces_added.size());
+}
+
 // The triangle soup forms, on the box's faces as a soup of Epeck points, the point-set detection
 // with normals, and the symmetry distance error of a mesh, a soup and a point set.
 TEST(ExactKernel, TriangleSoupFormsNormalsAndSymmetryDistanceErrorAsWithEpick)

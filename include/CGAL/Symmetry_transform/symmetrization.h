@@ -11,14 +11,17 @@
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/parameter_checks.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/symmetrization/completion.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/mesh_arrays.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/symmetrize_vertices.h>
 
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <optional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL::Symmetry_transform {
@@ -91,13 +94,44 @@ void exact_symmetries(const Symmetrized_vertices& s, const Local_frame& frame, c
   }
 }
 
+// Writes the symmetrized positions (`moved`, of the used vertices `used_index`, in the local frame)
+// to the vertices of `tm`, and their displacement; a vertex that no face uses stays. Sets the
+// displacement figures of `result`.
+template <typename GT, typename TriangleMesh, typename NamedParameters>
+void write_positions(TriangleMesh& tm, const std::vector<std::size_t>& used_index, const Mesh_arrays& used,
+                     const std::vector<Eigen::Vector3d>& moved, const Local_frame& frame, const NamedParameters& np,
+                     Symmetrization<GT>& result)
+{
+  auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                          get_property_map(CGAL::vertex_point, tm));
+  const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
+  double sum = 0., largest = 0.;
+  for(auto v : vertices(tm)) {
+    const std::size_t i = used_index[vertex_index(tm, index, v)];
+    Eigen::Vector3d displacement = Eigen::Vector3d::Zero();
+    if(i != unused_vertex) {
+      displacement = frame.radius * (moved[i] - used.points[i]);
+      put(vpm, v, to_point<GT>(frame.to_input(moved[i])));
+    }
+    sum += displacement.norm();
+    largest = (std::max)(largest, displacement.norm());
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_vertex_displacement_map_t>::value)
+      put(parameters::get_parameter(np, internal_np::st_vertex_displacement_map), v, to_vector<GT>(displacement));
+  }
+  result.mean_displacement = sum / double(vertices(tm).size());
+  result.max_displacement = largest;
+}
+
+// symmetrize() on the vertices that faces use: isolated and removed vertices take no part.
 template <typename GT, typename TriangleMesh, typename PlaneRange, typename RotationRange, typename NamedParameters>
 Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, const RotationRange& rotations,
                                    const NamedParameters& np)
 {
   const unsigned threads = read_number_of_threads(np);
   const bool whole = parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_whole_mesh), false);
-  Mesh_arrays mesh = mesh_arrays(tm, np);
+  const Mesh_arrays all = mesh_arrays(tm, np);
+  const std::vector<std::size_t> used_index = used_vertex_indices(all);
+  Mesh_arrays mesh = used_part(all, used_index);
   const Local_frame frame = local_frame(mesh.points);
   const std::vector<Rigid_motion> generators = generators_in(frame, planes, rotations);
   for(Eigen::Vector3d& p : mesh.points) p = frame.to_local(p);
@@ -109,22 +143,82 @@ Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, c
   exact_symmetries(*s, frame, planes, rotations, result);
   result.group_size = s->motions.size();
   result.paired_vertices = std::size_t(std::count(s->paired.begin(), s->paired.end(), true));
+  write_positions(tm, used_index, mesh, s->points, frame, np, result);
+  return result;
+}
+
+// The exact group that the symmetries generate, in the local frame (motions[0] the identity).
+template <typename PlaneRange, typename RotationRange>
+std::vector<Rigid_motion> exact_group_in(const Local_frame& frame, const PlaneRange& planes,
+                                         const RotationRange& rotations)
+{
+  Symmetry_group group = generated_group(generators_in(frame, planes, rotations));
+  make_group_exact(group);
+  return group.motions;
+}
+
+// The coverage_distance of the completion in the local frame; 0 if not given (the default).
+template <typename NamedParameters>
+double local_coverage_distance(const NamedParameters& np, const Local_frame& frame)
+{
+  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::st_coverage_distance_t>::value)
+    return 0.;
+  else
+    return read_real(np, internal_np::st_coverage_distance, 0., parameter_ranges::coverage_distance) / frame.radius;
+}
+
+template <typename GT, typename PointRange, typename PlaneRange, typename RotationRange, typename OutputIterator,
+          typename NamedParameters>
+OutputIterator complete_points(const PointRange& points, const PlaneRange& planes, const RotationRange& rotations,
+                               OutputIterator out, const NamedParameters& np)
+{
+  check_named_parameters(np);
+  const unsigned threads = read_number_of_threads(np);
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  std::vector<Eigen::Vector3d> local, normals;
+  for(const Dpoint& p : points_of_range(points, NP_helper::get_const_point_map(points, np))) local.push_back(to_eigen(p));
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value)
+    normals = unit_normals_of_range(points, NP_helper::get_normal_map(points, np));
+  const Local_frame frame = local_frame(local);
+  const std::vector<Rigid_motion> group = exact_group_in(frame, planes, rotations);
+  const double coverage = local_coverage_distance(np, frame);
+  for(Eigen::Vector3d& p : local) p = frame.to_local(p);
+  const std::vector<Added_point> added = with_progress(
+    np, [&] { return completion_of_points(local, normals, group, coverage, threads); },
+    [] { return std::vector<Added_point>(); });
+  for(const Added_point& a : added)
+    *out++ = std::make_pair(to_point<GT>(frame.to_input(a.point)), to_vector<GT>(a.normal));
+  return out;
+}
+
+template <typename GT, typename TriangleMesh, typename PlaneRange, typename RotationRange, typename OutputIterator,
+          typename NamedParameters>
+OutputIterator complete_mesh(TriangleMesh& tm, const PlaneRange& planes, const RotationRange& rotations,
+                             OutputIterator out, const NamedParameters& np)
+{
+  check_named_parameters(np);
+  const unsigned threads = read_number_of_threads(np);
+  Mesh_arrays mesh = used_part(mesh_arrays(tm, np));
+  const Local_frame frame = local_frame(mesh.points);
+  const std::vector<Rigid_motion> group = exact_group_in(frame, planes, rotations);
+  const double coverage = local_coverage_distance(np, frame);
+  for(Eigen::Vector3d& p : mesh.points) p = frame.to_local(p);
+  const Added_faces added = with_progress(
+    np, [&] { return completion_of_mesh(mesh.points, mesh.faces, group, coverage, threads); },
+    [] { return Added_faces(); });
   auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                           get_property_map(CGAL::vertex_point, tm));
-  const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
-  double sum = 0., largest = 0.;
-  for(auto v : vertices(tm)) {
-    const std::size_t i = vertex_index(tm, index, v);
-    const Eigen::Vector3d displacement = frame.radius * (s->points[i] - mesh.points[i]);
-    put(vpm, v, to_point<GT>(frame.to_input(s->points[i])));
-    sum += displacement.norm();
-    largest = (std::max)(largest, displacement.norm());
-    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::st_vertex_displacement_map_t>::value)
-      put(parameters::get_parameter(np, internal_np::st_vertex_displacement_map), v, to_vector<GT>(displacement));
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> vertex_of;
+  for(const Eigen::Vector3d& p : added.points) {
+    vertex_of.push_back(add_vertex(tm));
+    put(vpm, vertex_of.back(), to_point<GT>(frame.to_input(p)));
   }
-  result.mean_displacement = sum / double(mesh.points.size());
-  result.max_displacement = largest;
-  return result;
+  for(const auto& f : added.faces) {
+    const auto face = CGAL::Euler::add_face(std::array<vertex_descriptor, 3>{vertex_of[f[0]], vertex_of[f[1]], vertex_of[f[2]]}, tm);
+    if(face != boost::graph_traits<TriangleMesh>::null_face()) *out++ = face;
+  }
+  return out;
 }
 
 } // namespace internal
@@ -144,7 +238,7 @@ Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, c
  * symmetric to rounding, and the displacement the least in the sum of squares (a mirror pair
  * meets halfway). The other vertices take the mean of the images of the closest points of the
  * surface to their images, a few times over, with their displacement smoothed so that neighbours
- * move alike: the surface then becomes nearly symmetric.
+ * move alike: the surface then becomes nearly symmetric. A vertex that no face uses stays.
  *
  * \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
  * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
@@ -226,6 +320,175 @@ symmetrize(TriangleMesh& tm, const PlaneRange& planes, const NamedParameters& np
 {
   typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::symmetrize_mesh<GT>(tm, planes, std::vector<Rotational_symmetry<GT>>(), np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * Completes a point set that misses part of a symmetric shape (a scan's far side): adds the images,
+ * under the group of motions that `planes` and `rotations` generate, of the points whose image has
+ * no point of the set nearby. An image is added where no point lies within the coverage distance,
+ * neither an input point nor one added before: nothing is added where the input already has
+ * surface, and a part that several motions map to the same place is added once. The group is made
+ * exact first, as in `symmetrize()`. Every symmetry is taken to hold on the whole shape: a part
+ * with no counterpart on the real object (a raised arm) gets one.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \tparam RotationRange a `std::vector` of `Rotational_symmetry<GT>`
+ * \tparam OutputIterator an output iterator accepting `std::pair<GT::Point_3, GT::Vector_3>`
+ * \param points the points
+ * \param planes the mirror planes (possibly none)
+ * \param rotations the rotational symmetries, each of order at least 1
+ * \param out receives each added point with its normal (the image of the normal of its source; the
+ *        zero vector without `normal_map`)
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{coverage_distance}
+ *     \cgalParamDescription{an image with a point within this distance is not added}
+ *     \cgalParamType{`double`\, positive}
+ *     \cgalParamDefault{3 times the median distance from a point to its nearest neighbour (a scan is up to three times sparser where it grazes the surface)\, at least 5 % of the radius of the point set (the distance within which `symmetrize()` takes a symmetry to hold fully)}
+ *   \cgalParamNEnd
+ *   \cgalParamThreads{the threads of the nearest-point searches\, at most 1024 (0: the default); they change the speed only\, never the result}
+ *   \cgalParamCallback{nothing added}
+ *   \cgalParamPointMap
+ *   \cgalParamNormalMap{if given\, the normals of the added points are the images of the normals}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ * \returns the output iterator past the added points
+ * \throws std::invalid_argument on an empty point set, points that all coincide, a non-finite
+ *         coordinate, no symmetry given, a degenerate plane or axis, a rotation of order 0,
+ *         symmetries that generate no finite group of at most 120 motions, or a coverage distance
+ *         that is not positive
+ */
+template <typename PointRange, typename PlaneRange, typename RotationRange, typename OutputIterator,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<internal::Is_rotation_range<RotationRange>::value, int> = 0
+#endif
+          >
+OutputIterator complete_by_symmetry_of_points(const PointRange& points, const PlaneRange& planes,
+                                              const RotationRange& rotations, OutputIterator out,
+                                              const NamedParameters& np = parameters::default_values())
+{
+  return internal::complete_points<Geom_traits_of_points<PointRange, NamedParameters>>(points, planes, rotations, out, np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * `complete_by_symmetry_of_points()` with mirror planes only, as `detect_principal_symmetries_of_points()` returns them.
+ *
+ * \tparam PointRange a model of `ConstRange` whose value type is the key type of the point map
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \tparam OutputIterator an output iterator accepting `std::pair<GT::Point_3, GT::Vector_3>`
+ * \param points the points
+ * \param planes the mirror planes, at least one
+ * \param out receives each added point with its normal
+ * \param np the named parameters of `complete_by_symmetry_of_points()`
+ * \returns the output iterator past the added points
+ * \throws std::invalid_argument as `complete_by_symmetry_of_points()`
+ */
+template <typename PointRange, typename PlaneRange, typename OutputIterator,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<!internal::Is_rotation_range<OutputIterator>::value, int> = 0
+#endif
+          >
+OutputIterator complete_by_symmetry_of_points(const PointRange& points, const PlaneRange& planes, OutputIterator out,
+                                              const NamedParameters& np = parameters::default_values())
+{
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
+  return internal::complete_points<GT>(points, planes, std::vector<Rotational_symmetry<GT>>(), out, np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * Completes a mesh that misses part of a symmetric shape (a scanned mesh, a model cut open): adds
+ * to `tm` the images, under the group of motions that `planes` and `rotations` generate, of the
+ * faces whose image has no surface of the mesh nearby (its centroid farther than the coverage
+ * distance from the surface and from the faces added before), as `complete_by_symmetry_of_points()`
+ * does for points. The added faces form new components, with their own vertices, oriented as
+ * the faces they are images of; the faces of the input are unchanged. The gap between the input
+ * and the added part is at most about the coverage distance: close it with
+ * `CGAL::Polygon_mesh_processing` (snapping the borders, or filling the holes) where needed.
+ *
+ * \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` whose faces are triangles
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \tparam RotationRange a `std::vector` of `Rotational_symmetry<GT>`
+ * \tparam OutputIterator an output iterator accepting `boost::graph_traits<TriangleMesh>::%face_descriptor`
+ * \param tm the mesh, to which faces are added
+ * \param planes the mirror planes (possibly none)
+ * \param rotations the rotational symmetries, each of order at least 1
+ * \param out receives each added face
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{coverage_distance}
+ *     \cgalParamDescription{the image of a face whose centroid lies within this distance of the surface is not added}
+ *     \cgalParamType{`double`\, positive}
+ *     \cgalParamDefault{twice the median edge length\, at least 5 % of the radius of the mesh}
+ *   \cgalParamNEnd
+ *   \cgalParamThreads{the threads of the closest-point searches\, at most 1024 (0: the default); they change the speed only\, never the result}
+ *   \cgalParamCallback{nothing added}
+ *   \cgalParamNBegin{vertex_point_map}
+ *     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+ *     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+ *     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{vertex_index_map}
+ *     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index between `0` and `num_vertices(tm) - 1`}
+ *     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+ *     \cgalParamDefault{an automatically indexed internal map}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{geom_traits}
+ *     \cgalParamDescription{an instance of a geometric traits class}
+ *     \cgalParamType{a model of `Kernel`}
+ *     \cgalParamDefault{a \cgal Kernel deduced from the point type of `tm`}
+ *   \cgalParamNEnd
+ * \cgalNamedParamsEnd
+ * \returns the output iterator past the added faces
+ * \throws std::invalid_argument as `complete_by_symmetry_of_points()`, or on a mesh with no face or
+ *         a face that is not a triangle
+ */
+template <typename TriangleMesh, typename PlaneRange, typename RotationRange, typename OutputIterator,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<internal::Is_rotation_range<RotationRange>::value, int> = 0
+#endif
+          >
+OutputIterator complete_by_symmetry(TriangleMesh& tm, const PlaneRange& planes, const RotationRange& rotations,
+                                    OutputIterator out, const NamedParameters& np = parameters::default_values())
+{
+  return internal::complete_mesh<Geom_traits_of_mesh<TriangleMesh, NamedParameters>>(tm, planes, rotations, out, np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * `complete_by_symmetry()` with mirror planes only, as `detect_principal_symmetries()` returns them.
+ *
+ * \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` whose faces are triangles
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \tparam OutputIterator an output iterator accepting `boost::graph_traits<TriangleMesh>::%face_descriptor`
+ * \param tm the mesh, to which faces are added
+ * \param planes the mirror planes, at least one
+ * \param out receives each added face
+ * \param np the named parameters of `complete_by_symmetry()`
+ * \returns the output iterator past the added faces
+ * \throws std::invalid_argument as `complete_by_symmetry()`
+ */
+template <typename TriangleMesh, typename PlaneRange, typename OutputIterator,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<!internal::Is_rotation_range<OutputIterator>::value, int> = 0
+#endif
+          >
+OutputIterator complete_by_symmetry(TriangleMesh& tm, const PlaneRange& planes, OutputIterator out,
+                                    const NamedParameters& np = parameters::default_values())
+{
+  typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
+  return internal::complete_mesh<GT>(tm, planes, std::vector<Rotational_symmetry<GT>>(), out, np);
 }
 
 } // namespace CGAL::Symmetry_transform

@@ -6,7 +6,8 @@
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_NEAREST_POINT_H
 
 // The nearest of a set of points to a query, in a CGAL::Kd_tree: the one Kd-tree of the package
-// (the GEDT of a point set, ISP on a point set, the mirror faces of the remeshing).
+// (the GEDT of a point set, ISP on a point set, the mirror faces of the remeshing, the
+// symmetrization and the completion).
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 
@@ -54,6 +55,25 @@ public:
   }
 
   Answer operator()(const Eigen::Vector3d& q) const { return (*this)(to_dpoint(q)); }
+
+  // The k nearest points to point i other than itself, nearest first.
+  std::vector<std::size_t> nearest_others(std::size_t i, std::size_t k) const
+  {
+    const Search search(*tree_, points_[i], unsigned(k + 1), 0., true, Search::Distance(map()));
+    std::vector<std::size_t> result;
+    for(const auto& found : search)
+      if(found.first != i && result.size() < k) result.push_back(found.first);
+    return result;
+  }
+
+  // The nearest point to point i other than itself (a copy of it, at distance 0, if there is one).
+  Answer nearest_other(std::size_t i) const
+  {
+    const Search search(*tree_, points_[i], 2, 0., true, Search::Distance(map()));
+    for(const auto& found : search)
+      if(found.first != i) return {found.first, found.second};
+    return {i, 0.};
+  }
 
   const Dpoint& point(std::size_t i) const { return points_[i]; }
 

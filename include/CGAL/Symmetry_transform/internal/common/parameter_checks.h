@@ -118,6 +118,7 @@ constexpr Real_range smallest_part_fraction{"smallest_part_fraction", 0., 1., tr
 constexpr Real_range position_weight{"position_weight", 0., 1., true, true};
 constexpr Real_range min_error_drop{"min_error_drop", 0., 1., true, true};
 constexpr Real_range subdivision_ratio{"subdivision_ratio", 0., infinity, false, false};
+constexpr Real_range coverage_distance{"coverage_distance", 0., infinity, false, false};
 
 } // namespace parameter_ranges
 
@@ -258,6 +259,7 @@ void check_named_parameters(const NamedParameters& np)
   check_if_given(np, internal_np::max_number_of_proxies, r::max_number_of_proxies);
   check_if_given(np, internal_np::min_error_drop, r::min_error_drop);
   check_if_given(np, internal_np::st_position_weight, r::position_weight);
+  check_if_given(np, internal_np::st_coverage_distance, r::coverage_distance);
   check_if_given(np, internal_np::subdivision_ratio, r::subdivision_ratio);
   check_if_given(np, internal_np::st_max_segmentation_depth, r::max_segmentation_depth);
   check_if_given(np, internal_np::st_max_number_of_segments, r::max_number_of_segments);

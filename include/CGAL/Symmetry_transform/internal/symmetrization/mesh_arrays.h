@@ -21,6 +21,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -55,7 +56,7 @@ Mesh_arrays mesh_arrays(const TriangleMesh& tm, const NamedParameters& np)
   const auto vpm = vertex_point_map(tm, np);
   const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
   Mesh_arrays mesh;
-  mesh.points.resize(num_vertices(tm));
+  mesh.points.assign(num_vertices(tm), Eigen::Vector3d::Zero()); // removed vertices (garbage) included
   for(auto v : vertices(tm)) mesh.points[vertex_index(tm, index, v)] = to_eigen(to_dpoint(get(vpm, v)));
   for(auto f : faces(tm)) {
     const auto h = halfedge(f, tm);
@@ -69,6 +70,36 @@ Mesh_arrays mesh_arrays(const TriangleMesh& tm, const NamedParameters& np)
   if(mesh.faces.empty()) throw std::invalid_argument("Symmetry_transform: the mesh has no face");
   return mesh;
 }
+
+// The index of each vertex among those that faces use, numbered in the order of their first use,
+// or unused_vertex for a vertex that no face uses (isolated, or removed and not collected).
+constexpr std::size_t unused_vertex = std::size_t(-1);
+
+inline std::vector<std::size_t> used_vertex_indices(const Mesh_arrays& mesh)
+{
+  std::vector<std::size_t> used_index(mesh.points.size(), unused_vertex);
+  std::size_t count = 0;
+  for(const auto& face : mesh.faces)
+    for(std::size_t v : face)
+      if(used_index[v] == unused_vertex) used_index[v] = count++;
+  return used_index;
+}
+
+// The vertices that faces use, and the faces on them (`used_index` from used_vertex_indices()).
+inline Mesh_arrays used_part(const Mesh_arrays& mesh, const std::vector<std::size_t>& used_index)
+{
+  Mesh_arrays used;
+  used.points.resize(mesh.points.size() - std::size_t(std::count(used_index.begin(), used_index.end(), unused_vertex)));
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    if(used_index[v] != unused_vertex) used.points[used_index[v]] = mesh.points[v];
+  for(auto face : mesh.faces) {
+    for(std::size_t& v : face) v = used_index[v];
+    used.faces.push_back(face);
+  }
+  return used;
+}
+
+inline Mesh_arrays used_part(const Mesh_arrays& mesh) { return used_part(mesh, used_vertex_indices(mesh)); }
 
 // x_local = (x - center) / radius.
 struct Local_frame
@@ -100,7 +131,7 @@ inline Local_frame local_frame(const std::vector<Eigen::Vector3d>& points)
   frame.center /= double(points.size());
   frame.radius = 0.;
   for(const Eigen::Vector3d& p : points) frame.radius = (std::max)(frame.radius, (p - frame.center).norm());
-  if(!(frame.radius > 0.)) throw std::invalid_argument("Symmetry_transform: all vertices of the mesh coincide");
+  if(!(frame.radius > 0.)) throw std::invalid_argument("Symmetry_transform: all points of the shape coincide");
   return frame;
 }
 

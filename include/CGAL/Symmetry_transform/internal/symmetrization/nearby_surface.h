@@ -23,22 +23,34 @@
 
 namespace CGAL::Symmetry_transform::internal {
 
+// The faces around each vertex: around[first[v] .. first[v + 1]).
+struct Faces_around_vertices
+{
+  std::vector<std::size_t> first, around;
+
+  Faces_around_vertices(const std::vector<std::array<std::size_t, 3>>& faces, std::size_t number_of_vertices)
+    : first(number_of_vertices + 1, 0)
+  {
+    for(const auto& f : faces)
+      for(std::size_t v : f) ++first[v + 1];
+    for(std::size_t v = 0; v < number_of_vertices; ++v) first[v + 1] += first[v];
+    around.resize(first.back());
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(std::size_t v : faces[f]) around[next[v]++] = f;
+  }
+};
+
 class Nearby_surface
 {
 public:
   // `nearest` and `faces` must outlive the object.
   Nearby_surface(const Nearest_point& nearest, const std::vector<std::array<std::size_t, 3>>& faces,
                  std::size_t number_of_vertices)
-    : nearest_(nearest), faces_(faces), first_(number_of_vertices + 1, 0)
-  {
-    for(const auto& f : faces)
-      for(std::size_t v : f) ++first_[v + 1];
-    for(std::size_t v = 0; v < number_of_vertices; ++v) first_[v + 1] += first_[v];
-    around_.resize(first_.back());
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
-    for(std::size_t f = 0; f < faces.size(); ++f)
-      for(std::size_t v : faces[f]) around_[next[v]++] = f;
-  }
+    : nearest_(nearest), faces_(faces), rings_(faces, number_of_vertices)
+  {}
+
+  const Faces_around_vertices& rings() const { return rings_; }
 
   // The closest point to q of the faces around the vertex nearest to q, at `points`, found from
   // `vertex`, the answer of a query nearby (the same point's image at the previous step): a walk
@@ -59,8 +71,8 @@ private:
                                std::size_t vertex) const
   {
     for(std::size_t best = vertex;; vertex = best) {
-      for(std::size_t k = first_[vertex]; k < first_[vertex + 1]; ++k)
-        for(std::size_t c : faces_[around_[k]])
+      for(std::size_t k = rings_.first[vertex]; k < rings_.first[vertex + 1]; ++k)
+        for(std::size_t c : faces_[rings_.around[k]])
           if((q - points[c]).squaredNorm() < (q - points[best]).squaredNorm()) best = c;
       if(best == vertex) return vertex;
     }
@@ -90,17 +102,17 @@ private:
   void improve_around(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points, std::size_t vertex,
                       Closest& best) const
   {
-    for(std::size_t k = first_[vertex]; k < first_[vertex + 1]; ++k) {
-      const std::array<std::size_t, 3>& f = faces_[around_[k]];
+    for(std::size_t k = rings_.first[vertex]; k < rings_.first[vertex + 1]; ++k) {
+      const std::array<std::size_t, 3>& f = faces_[rings_.around[k]];
       const Eigen::Vector3d c = closest_point_on_triangle(q, points[f[0]], points[f[1]], points[f[2]]);
       const double d = (q - c).squaredNorm();
-      if(d < best.squared_distance) best = {c, d, around_[k]};
+      if(d < best.squared_distance) best = {c, d, rings_.around[k]};
     }
   }
 
   const Nearest_point& nearest_;
   const std::vector<std::array<std::size_t, 3>>& faces_;
-  std::vector<std::size_t> first_, around_; // the faces around vertex v: around_[first_[v] .. first_[v + 1])
+  Faces_around_vertices rings_;
 };
 
 } // namespace CGAL::Symmetry_transform::internal

@@ -1,0 +1,256 @@
+// Copyright (c) 2026 The CGAL Symmetry_transform project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): The CGAL Symmetry_transform developers
+
+#ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIZATION_COMPLETION_H
+#define CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIZATION_COMPLETION_H
+
+// Completion by symmetry: the images, under each motion of a finite group, of the parts of a shape
+// whose counterparts are missing (the far side of a scan). The image of a point (or of a face's
+// centroid) is missing where nothing lies within the coverage distance of it, neither the input
+// nor an image added under an earlier motion of the group: where the input has surface, nothing is
+// duplicated, and a part seen twice in the images (a box's hidden face is the image of its opposite
+// face under two motions) is added once. Two distances decide: the fine one, of the sampling (a few
+// spacings), and the coarse one, at least where symmetrize() takes a symmetry to hold. A missing
+// region must reach beyond the coarse distance somewhere, and extends through neighbouring images
+// beyond the fine one: a hole is filled up to its border, while a part of the shape that is only a
+// little asymmetric (its image a few spacings off the surface) is not given a second layer.
+// Every image is measured independently and the regions do not depend on the order in which they
+// grow: the result does not depend on the threads.
+// All in the frame where the shape has its centre at the origin and radius about 1.
+
+#include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
+#include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/symmetrization/nearby_surface.h>
+#include <CGAL/Symmetry_transform/internal/symmetrization/symmetry_group.h>
+#include <CGAL/Symmetry_transform/internal/symmetrization/vertex_orbits.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL::Symmetry_transform::internal {
+
+// The default coverage distance, in spacings of the input: the median distance from a point to its
+// nearest neighbour, or the median edge length of a mesh. A scan is sparser where it grazes the
+// surface (three times along the surface at 70 degrees): images there find a neighbour within 3.
+constexpr double point_coverage_spacings = 3.;
+// A mesh's images are measured to its surface, not to its vertices: two edge lengths absorb the
+// noise of a scanned mesh and the hundredths of a degree of a detected plane.
+constexpr double mesh_coverage_spacings = 2.;
+// The coarse distance (in radii): where symmetrize() takes a symmetry to hold fully.
+constexpr double least_coverage_distance = 0.05;
+// The neighbours of a point, for the growth of missing regions.
+constexpr std::size_t point_neighbours = 8;
+// The spacing is the median over at most this many points or edges, evenly spread.
+constexpr std::size_t spacing_samples = 10000;
+
+struct Added_point
+{
+  Eigen::Vector3d point;
+  Eigen::Vector3d normal; // zero when the input has no normals
+};
+
+// The median of the positive values of `lengths`, 0 if none.
+inline double median_of_positive(std::vector<double> lengths)
+{
+  lengths.erase(std::remove_if(lengths.begin(), lengths.end(), [](double d) { return !(d > 0.); }), lengths.end());
+  if(lengths.empty()) return 0.;
+  std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2), lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+inline std::size_t spacing_stride(std::size_t count) { return (std::max)(std::size_t(1), count / spacing_samples); }
+
+inline double median_point_spacing(const std::vector<Eigen::Vector3d>& points, const Nearest_point& nearest)
+{
+  std::vector<double> distances;
+  for(std::size_t i = 0; i < points.size(); i += spacing_stride(points.size()))
+    distances.push_back(std::sqrt(nearest.nearest_other(i).squared_distance));
+  return median_of_positive(std::move(distances));
+}
+
+inline double median_edge_length(const std::vector<Eigen::Vector3d>& points,
+                                 const std::vector<std::array<std::size_t, 3>>& faces)
+{
+  std::vector<double> lengths;
+  for(std::size_t f = 0; f < faces.size(); f += spacing_stride(faces.size()))
+    for(int k = 0; k < 3; ++k) lengths.push_back((points[faces[f][k]] - points[faces[f][(k + 1) % 3]]).norm());
+  return median_of_positive(std::move(lengths));
+}
+
+// For each of `queries`, its distance to what is present: the nearest point of `added` (if any)
+// or the input, as `distance_to_input` measures it.
+template <typename DistanceToInput>
+std::vector<double> distances_to_present(const std::vector<Eigen::Vector3d>& queries,
+                                         const std::vector<Eigen::Vector3d>& added,
+                                         const DistanceToInput& distance_to_input, unsigned threads)
+{
+  const std::unique_ptr<Nearest_point> nearest_added = added.empty() ? nullptr : std::make_unique<Nearest_point>(added);
+  std::vector<double> result(queries.size());
+  parallel_for(queries.size(), threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end && parallel_step(); ++i) {
+      result[i] = distance_to_input(queries[i]);
+      if(nearest_added) result[i] = (std::min)(result[i], std::sqrt((*nearest_added)(queries[i]).squared_distance));
+    }
+  });
+  throw_if_cancelled();
+  return result;
+}
+
+struct Coverage
+{
+  double fine, coarse;
+};
+
+// The items whose images are missing (see the head of this file): the connected regions, through
+// `for_each_neighbour(i, f)` (f called on each neighbour of item i), of the images beyond the fine
+// distance that reach beyond the coarse one.
+template <typename ForEachNeighbour>
+std::vector<char> missing_regions(const std::vector<double>& distance, const Coverage& coverage,
+                                  const ForEachNeighbour& for_each_neighbour)
+{
+  std::vector<char> missing(distance.size(), 0);
+  std::vector<std::size_t> stack;
+  for(std::size_t i = 0; i < distance.size(); ++i)
+    if(distance[i] > coverage.coarse) {
+      missing[i] = 1;
+      stack.push_back(i);
+    }
+  while(!stack.empty()) {
+    const std::size_t i = stack.back();
+    stack.pop_back();
+    for_each_neighbour(i, [&](std::size_t j) {
+      if(!missing[j] && distance[j] > coverage.fine) {
+        missing[j] = 1;
+        stack.push_back(j);
+      }
+    });
+  }
+  return missing;
+}
+
+// The fine distance `given` (0: `spacings` times `spacing`), and the coarse one.
+inline Coverage coverage_of(double given, double spacings, double spacing)
+{
+  const double fine = given > 0. ? given : spacings * spacing;
+  return {fine, (std::max)(fine, least_coverage_distance)};
+}
+
+// The point_neighbours nearest points of each point.
+inline std::vector<std::vector<std::size_t>> point_neighbourhoods(const Nearest_point& nearest, std::size_t count,
+                                                                  unsigned threads)
+{
+  std::vector<std::vector<std::size_t>> neighbours(count);
+  parallel_for(count, threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end && parallel_step(); ++i) neighbours[i] = nearest.nearest_others(i, point_neighbours);
+  });
+  throw_if_cancelled();
+  return neighbours;
+}
+
+// The images of `points` under the motions of `group` (but the identity) that are missing.
+// `coverage_distance` 0: point_coverage_spacings times the median spacing.
+inline std::vector<Added_point> completion_of_points(const std::vector<Eigen::Vector3d>& points,
+                                                     const std::vector<Eigen::Vector3d>& normals,
+                                                     const std::vector<Rigid_motion>& group,
+                                                     double coverage_distance, unsigned threads)
+{
+  const Nearest_point nearest(points);
+  const Coverage coverage = coverage_of(coverage_distance, point_coverage_spacings, median_point_spacing(points, nearest));
+  const std::vector<std::vector<std::size_t>> neighbours = point_neighbourhoods(nearest, points.size(), threads);
+  const auto distance_to_input = [&](const Eigen::Vector3d& q) { return std::sqrt(nearest(q).squared_distance); };
+  const auto for_each_neighbour = [&](std::size_t i, const auto& f) {
+    for(std::size_t j : neighbours[i]) f(j);
+  };
+  std::vector<Added_point> added;
+  std::vector<Eigen::Vector3d> added_points;
+  for(std::size_t g = 1; g < group.size(); ++g) {
+    report_progress(g - 1, group.size() - 1);
+    std::vector<Eigen::Vector3d> images;
+    for(const Eigen::Vector3d& p : points) images.push_back(group[g](p));
+    const std::vector<char> missing = missing_regions(
+      distances_to_present(images, added_points, distance_to_input, threads), coverage, for_each_neighbour);
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(missing[i])
+        added.push_back({images[i], normals.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(group[g].linear * normals[i])});
+    for(std::size_t i = added_points.size(); i < added.size(); ++i) added_points.push_back(added[i].point);
+  }
+  return added;
+}
+
+// The added part of a mesh: its own vertices, and faces on them.
+struct Added_faces
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<std::size_t, 3>> faces;
+};
+
+// The images under `motion` of the faces `chosen` (a face's corners reversed under a reflection, so
+// that the image keeps the outward orientation), each vertex image made once, appended to `added`.
+inline void add_face_images(const std::vector<Eigen::Vector3d>& points,
+                            const std::vector<std::array<std::size_t, 3>>& faces, const std::vector<char>& chosen,
+                            const Rigid_motion& motion, Added_faces& added)
+{
+  const bool reflects = motion.linear.determinant() < 0.;
+  std::vector<std::size_t> image_of(points.size(), no_vertex);
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    if(!chosen[f]) continue;
+    std::array<std::size_t, 3> image;
+    for(int k = 0; k < 3; ++k) {
+      std::size_t& v = image_of[faces[f][k]];
+      if(v == no_vertex) {
+        v = added.points.size();
+        added.points.push_back(motion(points[faces[f][k]]));
+      }
+      image[k] = v;
+    }
+    if(reflects) std::swap(image[1], image[2]);
+    added.faces.push_back(image);
+  }
+}
+
+// The images of the faces of a mesh under the motions of `group` (but the identity) that are
+// missing, measured at their centroids, to the surface of the mesh and to the centroids of the
+// faces added before. `coverage_distance` 0: mesh_coverage_spacings times the median edge length.
+inline Added_faces completion_of_mesh(const std::vector<Eigen::Vector3d>& points,
+                                      const std::vector<std::array<std::size_t, 3>>& faces,
+                                      const std::vector<Rigid_motion>& group, double coverage_distance,
+                                      unsigned threads)
+{
+  const Nearest_point nearest(points);
+  const Nearby_surface surface(nearest, faces, points.size());
+  const Coverage coverage = coverage_of(coverage_distance, mesh_coverage_spacings, median_edge_length(points, faces));
+  const auto distance_to_input = [&](const Eigen::Vector3d& q) {
+    std::size_t start = Nearby_surface::unknown;
+    return (q - surface.closest(q, points, start)).norm();
+  };
+  const Faces_around_vertices& rings = surface.rings();
+  const auto for_each_neighbour = [&](std::size_t f, const auto& visit) {
+    for(std::size_t v : faces[f])
+      for(std::size_t k = rings.first[v]; k < rings.first[v + 1]; ++k) visit(rings.around[k]);
+  };
+  Added_faces added;
+  std::vector<Eigen::Vector3d> added_centroids;
+  for(std::size_t g = 1; g < group.size(); ++g) {
+    report_progress(g - 1, group.size() - 1);
+    std::vector<Eigen::Vector3d> images;
+    for(const auto& f : faces) images.push_back(group[g]((points[f[0]] + points[f[1]] + points[f[2]]) / 3.));
+    const std::vector<char> missing = missing_regions(
+      distances_to_present(images, added_centroids, distance_to_input, threads), coverage, for_each_neighbour);
+    add_face_images(points, faces, missing, group[g], added);
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      if(missing[f]) added_centroids.push_back(images[f]);
+  }
+  return added;
+}
+
+} // namespace CGAL::Symmetry_transform::internal
+
+#endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIZATION_COMPLETION_H
