@@ -575,8 +575,9 @@ TEST(ExactKernel, SymmetrizationMovesTheVerticesAsWithEpick)
 }
 
 // The ellipsoid's vertices with x < 0.3 (with the faces among them, for the mesh) completed about
-// x = 0: the same points and faces added as with Epick.
-TEST(ExactKernel, CompletionAddsWhatItAddsWithEpick)
+// x = 0, then symmetrized about z = 0: the same points and faces added, the same points moved, as
+// with Epick.
+TEST(ExactKernel, CompletionAndPointSetSymmetrizationAsWithEpick)
 {
   const Mesh mesh = ellipsoid().mesh;
   std::vector<IK::Point_3> points;
@@ -595,6 +596,10 @@ TEST(ExactKernel, CompletionAddsWhatItAddsWithEpick)
   EXPECT_GT(added.size(), 0u);
   for(std::size_t i = 0; i < added.size(); ++i)
     for(int k = 0; k < 3; ++k) EXPECT_NEAR(CGAL::to_double(exact_added[i].first[k]), added[i].first[k], same);
+  ST::symmetrize_point_set(points, std::vector<IK::Plane_3>{IK::Plane_3(0, 0, 1, 0)});
+  ST::symmetrize_point_set(exact_points, std::vector<EK::Plane_3>{EK::Plane_3(0, 0, 1, 0)});
+  for(std::size_t i = 0; i < points.size(); ++i)
+    for(int k = 0; k < 3; ++k) EXPECT_NEAR(CGAL::to_double(exact_points[i][k]), points[i][k], same);
   Mesh cut = mesh;
   for(Mesh::Face_index f : faces(mesh))
     if(mesh.point(target(halfedge(f, mesh), mesh)).x() > 0.3) CGAL::Euler::remove_face(halfedge(f, cut), cut);

@@ -147,6 +147,44 @@ Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, c
   return result;
 }
 
+// symmetrize() for a point set, through its point map (and normal map, if given).
+template <typename GT, typename PointRange, typename PlaneRange, typename RotationRange, typename NamedParameters>
+Symmetrization<GT> symmetrize_points(PointRange& points, const PlaneRange& planes, const RotationRange& rotations,
+                                     const NamedParameters& np)
+{
+  check_named_parameters(np);
+  const unsigned threads = read_number_of_threads(np);
+  const bool whole = parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_whole_mesh), false);
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  const auto point_map = NP_helper::get_point_map(points, np);
+  std::vector<Eigen::Vector3d> local, normals;
+  for(const Dpoint& p : points_of_range(points, point_map)) local.push_back(to_eigen(p));
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value)
+    normals = unit_normals_of_range(points, NP_helper::get_normal_map(points, np));
+  const Local_frame frame = local_frame(local);
+  const std::vector<Rigid_motion> generators = generators_in(frame, planes, rotations);
+  for(Eigen::Vector3d& p : local) p = frame.to_local(p);
+  const std::optional<Symmetrized_vertices> s = with_progress(
+    np, [&] { return std::optional(symmetrize_point_positions(local, normals, generators, whole, threads)); },
+    [] { return std::optional<Symmetrized_vertices>(); });
+  Symmetrization<GT> result;
+  if(!s) return result;
+  exact_symmetries(*s, frame, planes, rotations, result);
+  result.group_size = s->motions.size();
+  result.paired_vertices = std::size_t(std::count(s->paired.begin(), s->paired.end(), true));
+  double sum = 0., largest = 0.;
+  std::size_t i = 0;
+  for(auto& p : points) {
+    const double moved = frame.radius * (s->points[i] - local[i]).norm();
+    put(point_map, p, to_point<GT>(frame.to_input(s->points[i++])));
+    sum += moved;
+    largest = (std::max)(largest, moved);
+  }
+  result.mean_displacement = sum / double(local.size());
+  result.max_displacement = largest;
+  return result;
+}
+
 // The exact group that the symmetries generate, in the local frame (motions[0] the identity).
 template <typename PlaneRange, typename RotationRange>
 std::vector<Rigid_motion> exact_group_in(const Local_frame& frame, const PlaneRange& planes,
@@ -320,6 +358,82 @@ symmetrize(TriangleMesh& tm, const PlaneRange& planes, const NamedParameters& np
 {
   typedef Geom_traits_of_mesh<TriangleMesh, NamedParameters> GT;
   return internal::symmetrize_mesh<GT>(tm, planes, std::vector<Rotational_symmetry<GT>>(), np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * `symmetrize()` for a point set: moves the points so that the set becomes symmetric under the
+ * mirror planes `planes` (and the rotations of `rotations`), each as little as possible. A point
+ * whose images under the group land on points (within half the distance from each to its third
+ * nearest neighbour), as on a scan of a symmetric object sampled alike on both sides, takes the mean of
+ * its orbit: the set becomes symmetric to rounding, with the least displacement. The others take
+ * the mean of the images of the surface near their images, a few times over: the surface near a
+ * point is its tangent plane if the points have normals (`normal_map`), the point itself otherwise. The order of the points is unchanged; their normals
+ * are not updated.
+ *
+ * \tparam PointRange a model of `Range` whose value type is the key type of the point map
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \tparam RotationRange a `std::vector` of `Rotational_symmetry<GT>`
+ * \param points the points, moved through the point map
+ * \param planes the mirror planes (possibly none)
+ * \param rotations the rotational symmetries, each of order at least 1
+ * \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+ * \cgalNamedParamsBegin
+ *   \cgalParamNBegin{whole_mesh}
+ *     \cgalParamDescription{whether every point moves; if `false`, only where the symmetries hold (as for a mesh: fully if the images of the point lie within 5 % of the radius of the set, not at all if one lies beyond 15 %)}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`}
+ *   \cgalParamNEnd
+ *   \cgalParamThreads{the threads of the nearest-point searches\, at most 1024 (0: the default); they change the speed only\, never the result}
+ *   \cgalParamCallback{the empty `Symmetrization`\, the points unchanged}
+ *   \cgalParamNBegin{point_map}
+ *     \cgalParamDescription{a property map associating points to the elements of the point set `points`}
+ *     \cgalParamType{a model of `ReadWritePropertyMap` whose key type is the value type of the iterator of `PointRange` and whose value type is `GT::Point_3`}
+ *     \cgalParamDefault{`CGAL::Identity_property_map<GT::Point_3>`}
+ *   \cgalParamNEnd
+ *   \cgalParamNormalMap{if given\, the surface near a point is its tangent plane; a zero normal leaves it a point}
+ *   \cgalParamGeomTraits
+ * \cgalNamedParamsEnd
+ * \returns the symmetries of the result, the group's size, the paired points and the displacement
+ * \throws std::invalid_argument as `symmetrize()`, or on an empty point set or points that all coincide
+ */
+template <typename PointRange, typename PlaneRange, typename RotationRange,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<internal::Is_rotation_range<RotationRange>::value, int> = 0
+#endif
+          >
+Symmetrization<Geom_traits_of_points<PointRange, NamedParameters>>
+symmetrize_point_set(PointRange& points, const PlaneRange& planes, const RotationRange& rotations,
+                     const NamedParameters& np = parameters::default_values())
+{
+  return internal::symmetrize_points<Geom_traits_of_points<PointRange, NamedParameters>>(points, planes, rotations, np);
+}
+
+/*!
+ * \ingroup PkgSymmetryTransformSymmetrizationRef
+ * `symmetrize_point_set()` with mirror planes only, as `detect_principal_symmetries_of_points()` returns them.
+ *
+ * \tparam PointRange a model of `Range` whose value type is the key type of the point map
+ * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
+ * \param points the points, moved through the point map
+ * \param planes the mirror planes, at least one
+ * \param np the named parameters of `symmetrize_point_set()`
+ * \returns the planes of the result, the group's size, the paired points and the displacement
+ * \throws std::invalid_argument as `symmetrize_point_set()`
+ */
+template <typename PointRange, typename PlaneRange, typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          ,
+          std::enable_if_t<!internal::Is_rotation_range<NamedParameters>::value, int> = 0
+#endif
+          >
+Symmetrization<Geom_traits_of_points<PointRange, NamedParameters>>
+symmetrize_point_set(PointRange& points, const PlaneRange& planes, const NamedParameters& np = parameters::default_values())
+{
+  typedef Geom_traits_of_points<PointRange, NamedParameters> GT;
+  return internal::symmetrize_points<GT>(points, planes, std::vector<Rotational_symmetry<GT>>(), np);
 }
 
 /*!

@@ -10,6 +10,7 @@
 // symmetrization and the completion).
 
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Search_traits_3.h>
@@ -91,6 +92,18 @@ private:
   std::vector<Dpoint> points_;
   std::unique_ptr<Search::Tree> tree_;
 };
+
+// The k nearest other points of each of the first `count` points of `nearest`.
+inline std::vector<std::vector<std::size_t>> nearest_neighbourhoods(const Nearest_point& nearest, std::size_t count,
+                                                                    std::size_t k, unsigned threads)
+{
+  std::vector<std::vector<std::size_t>> neighbours(count);
+  parallel_for(count, threads, [&](unsigned, std::size_t begin, std::size_t end) {
+    for(std::size_t i = begin; i < end && parallel_step(); ++i) neighbours[i] = nearest.nearest_others(i, k);
+  });
+  throw_if_cancelled();
+  return neighbours;
+}
 
 } // namespace CGAL::Symmetry_transform::internal
 

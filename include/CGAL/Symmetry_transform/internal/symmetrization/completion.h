@@ -46,8 +46,6 @@ constexpr double point_coverage_spacings = 3.;
 constexpr double mesh_coverage_spacings = 2.;
 // The coarse distance (in radii): where symmetrize() takes a symmetry to hold fully.
 constexpr double least_coverage_distance = 0.05;
-// The neighbours of a point, for the growth of missing regions.
-constexpr std::size_t point_neighbours = 8;
 // The spacing is the median over at most this many points or edges, evenly spread.
 constexpr std::size_t spacing_samples = 10000;
 
@@ -143,18 +141,6 @@ inline Coverage coverage_of(double given, double spacings, double spacing)
   return {fine, (std::max)(fine, least_coverage_distance)};
 }
 
-// The point_neighbours nearest points of each point.
-inline std::vector<std::vector<std::size_t>> point_neighbourhoods(const Nearest_point& nearest, std::size_t count,
-                                                                  unsigned threads)
-{
-  std::vector<std::vector<std::size_t>> neighbours(count);
-  parallel_for(count, threads, [&](unsigned, std::size_t begin, std::size_t end) {
-    for(std::size_t i = begin; i < end && parallel_step(); ++i) neighbours[i] = nearest.nearest_others(i, point_neighbours);
-  });
-  throw_if_cancelled();
-  return neighbours;
-}
-
 // The images of `points` under the motions of `group` (but the identity) that are missing.
 // `coverage_distance` 0: point_coverage_spacings times the median spacing.
 inline std::vector<Added_point> completion_of_points(const std::vector<Eigen::Vector3d>& points,
@@ -164,7 +150,8 @@ inline std::vector<Added_point> completion_of_points(const std::vector<Eigen::Ve
 {
   const Nearest_point nearest(points);
   const Coverage coverage = coverage_of(coverage_distance, point_coverage_spacings, median_point_spacing(points, nearest));
-  const std::vector<std::vector<std::size_t>> neighbours = point_neighbourhoods(nearest, points.size(), threads);
+  const std::vector<std::vector<std::size_t>> neighbours =
+    nearest_neighbourhoods(nearest, points.size(), point_neighbours, threads);
   const auto distance_to_input = [&](const Eigen::Vector3d& q) { return std::sqrt(nearest(q).squared_distance); };
   const auto for_each_neighbour = [&](std::size_t i, const auto& f) {
     for(std::size_t j : neighbours[i]) f(j);

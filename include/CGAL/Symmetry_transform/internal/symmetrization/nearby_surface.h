@@ -115,6 +115,37 @@ private:
   Faces_around_vertices rings_;
 };
 
+// The neighbours of a point of a point set: for the smoothing of its displacement, and for the
+// growth of the regions that the completion adds.
+constexpr std::size_t point_neighbours = 8;
+
+// Nearby_surface for a point set: the surface near a query is the tangent plane of the point
+// nearest to it (the point itself where it has no normal).
+class Nearby_points
+{
+public:
+  // `nearest` and `normals` (unit, or empty, or zero where a point has none) must outlive the object.
+  Nearby_points(const Nearest_point& nearest, const std::vector<Eigen::Vector3d>& normals)
+    : nearest_(nearest), normals_(normals)
+  {}
+
+  // The projection of q onto the tangent plane of the point nearest to it (found among the points
+  // where they were at the start: `points` are where they are now); `point` becomes that point.
+  Eigen::Vector3d closest(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points, std::size_t& point) const
+  {
+    point = nearest_(q).index;
+    if(normals_.empty()) return points[point];
+    const Eigen::Vector3d& n = normals_[point];
+    return q - (q - points[point]).dot(n) * n;
+  }
+
+  static constexpr std::size_t unknown = std::size_t(-1);
+
+private:
+  const Nearest_point& nearest_;
+  const std::vector<Eigen::Vector3d>& normals_;
+};
+
 } // namespace CGAL::Symmetry_transform::internal
 
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_SYMMETRIZATION_NEARBY_SURFACE_H

@@ -24,6 +24,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <cstddef>
 #include <vector>
 
@@ -85,9 +87,10 @@ inline void smooth_displacements(std::vector<Eigen::Vector3d>& points, const std
 // One step for the unpaired vertices: each takes the mean over the group of g^-1 of the closest
 // point of the surface to g(p). `near[i * |G| + g]`: the vertex where the search for the image of
 // vertex i under element g starts, kept from step to step.
-inline void surface_symmetrization_step(std::vector<Eigen::Vector3d>& points, const Nearby_surface& surface,
-                                        const std::vector<bool>& paired, const std::vector<Rigid_motion>& motions,
-                                        std::vector<std::size_t>& near, unsigned threads)
+template <typename Surface>
+void surface_symmetrization_step(std::vector<Eigen::Vector3d>& points, const Surface& surface,
+                                 const std::vector<bool>& paired, const std::vector<Rigid_motion>& motions,
+                                 std::vector<std::size_t>& near, unsigned threads)
 {
   std::vector<Rigid_motion> inverse_motions;
   for(const Rigid_motion& m : motions) inverse_motions.push_back(inverse(m));
@@ -142,9 +145,9 @@ inline Distinct_points distinct_points(const std::vector<Eigen::Vector3d>& point
 // How much of its move each vertex makes: 1 where every generator maps it onto the surface, 0
 // where one maps it far from it (see support_full_distance). The searches start at the vertices
 // nearest to the images (`images`).
-inline std::vector<double> support_weights(const std::vector<Eigen::Vector3d>& points, const Nearby_surface& surface,
-                                           const Symmetry_group& group, const Generator_images& images,
-                                           unsigned threads)
+template <typename Surface>
+std::vector<double> support_weights(const std::vector<Eigen::Vector3d>& points, const Surface& surface,
+                                    const Symmetry_group& group, const Generator_images& images, unsigned threads)
 {
   std::vector<double> weight(points.size(), 1.);
   parallel_for(points.size(), threads, [&](unsigned, std::size_t begin, std::size_t end) {
@@ -163,12 +166,12 @@ inline std::vector<double> support_weights(const std::vector<Eigen::Vector3d>& p
   return weight;
 }
 
-// The paired vertices at their orbit's mean, under the group made exact (symmetrize_distinct()).
+// The paired vertices at their orbit's mean, under the group made exact (symmetrize_near()).
 inline Symmetrized_vertices orbit_symmetrized(const std::vector<Eigen::Vector3d>& points,
-                                              const std::vector<std::array<std::size_t, 3>>& faces,
-                                              Symmetry_group group, const Generator_images& images)
+                                              const std::vector<double>& spacing, Symmetry_group group,
+                                              const Generator_images& images)
 {
-  const std::vector<std::vector<std::size_t>> permutation = vertex_permutations(points, faces, group, images);
+  const std::vector<std::vector<std::size_t>> permutation = vertex_permutations(spacing, group, images);
   const std::vector<bool> paired = consistent_vertices(permutation, group);
   refit_motions(group, points, permutation, paired);
   make_group_exact(group);
@@ -180,7 +183,39 @@ inline Symmetrized_vertices orbit_symmetrized(const std::vector<Eigen::Vector3d>
   return result;
 }
 
-// The symmetrization of distinct points (symmetrize_vertices()).
+// The symmetrization of distinct points on a shape whose surface `surface` finds near a query
+// (Nearby_surface for a mesh, Nearby_points for a point set): `spacing` at each point (its shortest
+// edge, or its distance to its nearest neighbour) sets how near an image must land to pair, and
+// `neighbours()` gives the neighbours of each point for the smoothing (made only if needed).
+template <typename Surface, typename Neighbours>
+Symmetrized_vertices symmetrize_near(const std::vector<Eigen::Vector3d>& points, const Surface& surface,
+                                     const Nearest_point& nearest, const std::vector<double>& spacing,
+                                     const Neighbours& neighbours, const std::vector<Rigid_motion>& generators,
+                                     bool whole, unsigned threads)
+{
+  const Symmetry_group group = generated_group(generators); // as given: for the searches
+  const Generator_images images = generator_images(points, group, nearest, threads);
+  Symmetrized_vertices result = orbit_symmetrized(points, spacing, group, images);
+  if(std::find(result.paired.begin(), result.paired.end(), false) != result.paired.end()) {
+    const std::vector<std::vector<std::size_t>> around = neighbours();
+    const std::size_t elements = result.motions.size();
+    std::vector<std::size_t> near(points.size() * elements, Surface::unknown);
+    for(std::size_t s : group.generator_element)
+      for(std::size_t i = 0; i < points.size(); ++i) near[i * elements + s] = images[s][i].index;
+    for(int step = 0; step < surface_symmetrization_steps; ++step) {
+      report_progress(step, surface_symmetrization_steps);
+      surface_symmetrization_step(result.points, surface, result.paired, result.motions, near, threads);
+      smooth_displacements(result.points, points, result.paired, around);
+    }
+  }
+  if(!whole) {
+    const std::vector<double> weight = support_weights(points, surface, group, images, threads);
+    for(std::size_t i = 0; i < points.size(); ++i) result.points[i] = points[i] + weight[i] * (result.points[i] - points[i]);
+  }
+  return result;
+}
+
+// The symmetrization of the distinct vertices of a mesh (symmetrize_vertices()).
 inline Symmetrized_vertices symmetrize_distinct(const std::vector<Eigen::Vector3d>& points,
                                                 const std::vector<std::array<std::size_t, 3>>& faces,
                                                 const std::vector<Rigid_motion>& generators, bool whole,
@@ -188,25 +223,24 @@ inline Symmetrized_vertices symmetrize_distinct(const std::vector<Eigen::Vector3
 {
   const Nearest_point nearest(points);
   const Nearby_surface surface(nearest, faces, points.size());
-  const Symmetry_group group = generated_group(generators); // as given: for the searches
-  const Generator_images images = generator_images(points, group, nearest, threads);
-  Symmetrized_vertices result = orbit_symmetrized(points, faces, group, images);
-  if(std::find(result.paired.begin(), result.paired.end(), false) != result.paired.end()) {
-    const std::vector<std::vector<std::size_t>> neighbours = vertex_neighbours(points.size(), faces);
-    const std::size_t elements = result.motions.size();
-    std::vector<std::size_t> near(points.size() * elements, Nearby_surface::unknown);
-    for(std::size_t s : group.generator_element)
-      for(std::size_t i = 0; i < points.size(); ++i) near[i * elements + s] = images[s][i].index;
-    for(int step = 0; step < surface_symmetrization_steps; ++step) {
-      report_progress(step, surface_symmetrization_steps);
-      surface_symmetrization_step(result.points, surface, result.paired, result.motions, near, threads);
-      smooth_displacements(result.points, points, result.paired, neighbours);
-    }
+  return symmetrize_near(points, surface, nearest, shortest_edges(points, faces),
+                         [&] { return vertex_neighbours(points.size(), faces); }, generators, whole, threads);
+}
+
+// `symmetrize(distinct)` on the distinct positions of `points` (Distinct_points), then per point.
+template <typename SymmetrizeDistinct>
+Symmetrized_vertices on_distinct_points(const std::vector<Eigen::Vector3d>& points, const SymmetrizeDistinct& symmetrize)
+{
+  const Distinct_points distinct = distinct_points(points);
+  Symmetrized_vertices result = symmetrize(distinct);
+  std::vector<Eigen::Vector3d> moved(points.size());
+  std::vector<bool> paired(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    moved[i] = result.points[distinct.of_vertex[i]];
+    paired[i] = result.paired[distinct.of_vertex[i]];
   }
-  if(!whole) {
-    const std::vector<double> weight = support_weights(points, surface, group, images, threads);
-    for(std::size_t i = 0; i < points.size(); ++i) result.points[i] = points[i] + weight[i] * (result.points[i] - points[i]);
-  }
+  result.points = std::move(moved);
+  result.paired = std::move(paired);
   return result;
 }
 
@@ -217,19 +251,45 @@ inline Symmetrized_vertices symmetrize_vertices(const std::vector<Eigen::Vector3
                                                 const std::vector<Rigid_motion>& generators, bool whole,
                                                 unsigned threads)
 {
-  const Distinct_points distinct = distinct_points(points);
-  for(auto& f : faces)
-    for(std::size_t& v : f) v = distinct.of_vertex[v];
-  Symmetrized_vertices result = symmetrize_distinct(distinct.points, faces, generators, whole, threads);
-  std::vector<Eigen::Vector3d> moved(points.size());
-  std::vector<bool> paired(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    moved[i] = result.points[distinct.of_vertex[i]];
-    paired[i] = result.paired[distinct.of_vertex[i]];
-  }
-  result.points = std::move(moved);
-  result.paired = std::move(paired);
-  return result;
+  return on_distinct_points(points, [&](const Distinct_points& distinct) {
+    for(auto& f : faces)
+      for(std::size_t& v : f) v = distinct.of_vertex[v];
+    return symmetrize_distinct(distinct.points, faces, generators, whole, threads);
+  });
+}
+
+// The spacing at a point of a point set, as the shortest edge at a vertex: its distance to this
+// nearest neighbour. A random sampling puts some points very near to one another: the nearest
+// would make their pairing fail on noise far below the spacing.
+constexpr std::size_t pairing_neighbour = 3;
+
+// A point set (centred, of radius about 1, with unit normals or none) symmetrized as
+// symmetrize_vertices() does a mesh: a point pairs with the point its images land on (within half
+// the distance from that point to its third nearest neighbour); the others move to the mean of the
+// images of the surface near their images (Nearby_points).
+inline Symmetrized_vertices symmetrize_point_positions(const std::vector<Eigen::Vector3d>& points,
+                                                       const std::vector<Eigen::Vector3d>& normals,
+                                                       const std::vector<Rigid_motion>& generators, bool whole,
+                                                       unsigned threads)
+{
+  return on_distinct_points(points, [&](const Distinct_points& distinct) {
+    std::vector<Eigen::Vector3d> distinct_normals;
+    if(!normals.empty()) {
+      distinct_normals.resize(distinct.points.size());
+      for(std::size_t i = 0; i < points.size(); ++i) distinct_normals[distinct.of_vertex[i]] = normals[i];
+    }
+    const std::vector<Eigen::Vector3d>& p = distinct.points;
+    const Nearest_point nearest(p);
+    const Nearby_points surface(nearest, distinct_normals);
+    const std::vector<std::vector<std::size_t>> neighbours =
+      nearest_neighbourhoods(nearest, p.size(), point_neighbours, threads);
+    std::vector<double> spacing(p.size(), std::numeric_limits<double>::infinity());
+    for(std::size_t i = 0; i < p.size(); ++i)
+      if(neighbours[i].size() >= pairing_neighbour) spacing[i] = (p[neighbours[i][pairing_neighbour - 1]] - p[i]).norm();
+    // No smoothing: points do not fold, and the noise of each point is its own.
+    const auto no_neighbours = [&] { return std::vector<std::vector<std::size_t>>(p.size()); };
+    return symmetrize_near(p, surface, nearest, spacing, no_neighbours, generators, whole, threads);
+  });
 }
 
 } // namespace CGAL::Symmetry_transform::internal

@@ -82,13 +82,12 @@ inline std::vector<std::size_t> vertex_images(const std::vector<Nearest_point::A
 
 // The permutation of the vertices under every element of the group, where the images of each
 // generator land on vertices (no_vertex elsewhere), composed along the multiplication table.
-inline std::vector<std::vector<std::size_t>> vertex_permutations(const std::vector<Eigen::Vector3d>& points,
-                                                                 const std::vector<std::array<std::size_t, 3>>& faces,
+// `shortest`: the shortest edge at each vertex (the spacing at each point of a point set).
+inline std::vector<std::vector<std::size_t>> vertex_permutations(const std::vector<double>& shortest,
                                                                  const Symmetry_group& group,
                                                                  const Generator_images& images)
 {
-  const std::size_t n = points.size(), elements = group.motions.size();
-  const std::vector<double> shortest = shortest_edges(points, faces);
+  const std::size_t n = shortest.size(), elements = group.motions.size();
   std::vector<std::vector<std::size_t>> permutation(elements);
   permutation[0].resize(n);
   for(std::size_t i = 0; i < n; ++i) permutation[0][i] = i;
