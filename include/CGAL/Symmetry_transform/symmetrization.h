@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -94,6 +95,31 @@ void exact_symmetries(const Symmetrized_vertices& s, const Local_frame& frame, c
   }
 }
 
+// What the symmetrization `s` made exact: the symmetries, the group's size, the paired points.
+template <typename GT, typename PlaneRange, typename RotationRange>
+Symmetrization<GT> symmetrization_of(const Symmetrized_vertices& s, const Local_frame& frame, const PlaneRange& planes,
+                                     const RotationRange& rotations)
+{
+  Symmetrization<GT> result;
+  exact_symmetries(s, frame, planes, rotations, result);
+  result.group_size = s.motions.size();
+  result.paired_vertices = std::size_t(std::count(s.paired.begin(), s.paired.end(), true));
+  return result;
+}
+
+// The points of a point range and their unit normals (none without a `normal_map`).
+template <typename PointRange, typename NamedParameters>
+std::pair<std::vector<Eigen::Vector3d>, std::vector<Eigen::Vector3d>> point_arrays(const PointRange& points,
+                                                                                   const NamedParameters& np)
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  std::vector<Eigen::Vector3d> positions, normals;
+  for(const Dpoint& p : points_of_range(points, NP_helper::get_const_point_map(points, np))) positions.push_back(to_eigen(p));
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value)
+    normals = unit_normals_of_range(points, NP_helper::get_normal_map(points, np));
+  return {positions, normals};
+}
+
 // Writes the symmetrized positions (`moved`, of the used vertices `used_index`, in the local frame)
 // to the vertices of `tm`, and their displacement; a vertex that no face uses stays. Sets the
 // displacement figures of `result`.
@@ -127,6 +153,7 @@ template <typename GT, typename TriangleMesh, typename PlaneRange, typename Rota
 Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, const RotationRange& rotations,
                                    const NamedParameters& np)
 {
+  check_named_parameters(np);
   const unsigned threads = read_number_of_threads(np);
   const bool whole = parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_whole_mesh), false);
   const Mesh_arrays all = mesh_arrays(tm, np);
@@ -138,11 +165,8 @@ Symmetrization<GT> symmetrize_mesh(TriangleMesh& tm, const PlaneRange& planes, c
   const std::optional<Symmetrized_vertices> s = with_progress(
     np, [&] { return std::optional(symmetrize_vertices(mesh.points, mesh.faces, generators, whole, threads)); },
     [] { return std::optional<Symmetrized_vertices>(); });
-  Symmetrization<GT> result;
-  if(!s) return result;
-  exact_symmetries(*s, frame, planes, rotations, result);
-  result.group_size = s->motions.size();
-  result.paired_vertices = std::size_t(std::count(s->paired.begin(), s->paired.end(), true));
+  if(!s) return Symmetrization<GT>();
+  Symmetrization<GT> result = symmetrization_of<GT>(*s, frame, planes, rotations);
   write_positions(tm, used_index, mesh, s->points, frame, np, result);
   return result;
 }
@@ -155,23 +179,17 @@ Symmetrization<GT> symmetrize_points(PointRange& points, const PlaneRange& plane
   check_named_parameters(np);
   const unsigned threads = read_number_of_threads(np);
   const bool whole = parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_whole_mesh), false);
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  const auto point_map = NP_helper::get_point_map(points, np);
+  const auto point_map = Point_set_processing_3_np_helper<PointRange, NamedParameters>::get_point_map(points, np);
   std::vector<Eigen::Vector3d> local, normals;
-  for(const Dpoint& p : points_of_range(points, point_map)) local.push_back(to_eigen(p));
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value)
-    normals = unit_normals_of_range(points, NP_helper::get_normal_map(points, np));
+  std::tie(local, normals) = point_arrays(points, np);
   const Local_frame frame = local_frame(local);
   const std::vector<Rigid_motion> generators = generators_in(frame, planes, rotations);
   for(Eigen::Vector3d& p : local) p = frame.to_local(p);
   const std::optional<Symmetrized_vertices> s = with_progress(
     np, [&] { return std::optional(symmetrize_point_positions(local, normals, generators, whole, threads)); },
     [] { return std::optional<Symmetrized_vertices>(); });
-  Symmetrization<GT> result;
-  if(!s) return result;
-  exact_symmetries(*s, frame, planes, rotations, result);
-  result.group_size = s->motions.size();
-  result.paired_vertices = std::size_t(std::count(s->paired.begin(), s->paired.end(), true));
+  if(!s) return Symmetrization<GT>();
+  Symmetrization<GT> result = symmetrization_of<GT>(*s, frame, planes, rotations);
   double sum = 0., largest = 0.;
   std::size_t i = 0;
   for(auto& p : points) {
@@ -212,11 +230,8 @@ OutputIterator complete_points(const PointRange& points, const PlaneRange& plane
 {
   check_named_parameters(np);
   const unsigned threads = read_number_of_threads(np);
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   std::vector<Eigen::Vector3d> local, normals;
-  for(const Dpoint& p : points_of_range(points, NP_helper::get_const_point_map(points, np))) local.push_back(to_eigen(p));
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::normal_t>::value)
-    normals = unit_normals_of_range(points, NP_helper::get_normal_map(points, np));
+  std::tie(local, normals) = point_arrays(points, np);
   const Local_frame frame = local_frame(local);
   const std::vector<Rigid_motion> group = exact_group_in(frame, planes, rotations);
   const double coverage = local_coverage_distance(np, frame);

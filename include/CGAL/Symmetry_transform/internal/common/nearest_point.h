@@ -67,15 +67,6 @@ public:
     return result;
   }
 
-  // The nearest point to point i other than itself (a copy of it, at distance 0, if there is one).
-  Answer nearest_other(std::size_t i) const
-  {
-    const Search search(*tree_, points_[i], 2, 0., true, Search::Distance(map()));
-    for(const auto& found : search)
-      if(found.first != i) return {found.first, found.second};
-    return {i, 0.};
-  }
-
   const Dpoint& point(std::size_t i) const { return points_[i]; }
 
 private:

@@ -70,7 +70,7 @@ inline double median_point_spacing(const std::vector<Eigen::Vector3d>& points, c
 {
   std::vector<double> distances;
   for(std::size_t i = 0; i < points.size(); i += spacing_stride(points.size()))
-    distances.push_back(std::sqrt(nearest.nearest_other(i).squared_distance));
+    for(std::size_t j : nearest.nearest_others(i, 1)) distances.push_back((points[j] - points[i]).norm());
   return median_of_positive(std::move(distances));
 }
 
