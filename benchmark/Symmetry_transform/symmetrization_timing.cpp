@@ -12,7 +12,8 @@
 // strongest plane before and after, and the peak resident memory of the process so far.
 // With --complete 1, the completion instead: the faces on the positive side of the strongest plane
 // and above the centroid along the plane's second axis (a quarter of the surface) cut away, then
-// wall seconds of the detection on the cut mesh, of complete_by_symmetry() on it with the plane,
+// wall seconds of the detection on the cut mesh, of complete_by_symmetry() on it with the plane
+// (added as separate components, then with stitch_borders(true), with the border edges left),
 // and of complete_by_symmetry_of_points() on its vertices with their normals.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -124,10 +125,19 @@ void time_completion(const std::string& name, unsigned loop)
   std::vector<std::pair<K::Point_3, K::Vector_3>> points;
   for(auto v : vertices(mesh)) points.emplace_back(mesh.point(v), CGAL::Polygon_mesh_processing::compute_vertex_normal(v, mesh));
   const std::size_t faces_before = num_faces(mesh);
-  std::vector<Mesh::Face_index> added_faces;
+  Mesh stitched = mesh;
+  std::vector<Mesh::Face_index> added_faces, stitched_faces;
   timer.reset();
   ST::complete_by_symmetry(mesh, found, std::back_inserter(added_faces));
   const double mesh_completion = timer.time();
+  timer.reset();
+  ST::complete_by_symmetry(stitched, found, std::back_inserter(stitched_faces), CGAL::parameters::stitch_borders(true));
+  const double stitched_completion = timer.time();
+  const auto border_edges = [](const Mesh& m) {
+    std::size_t count = 0;
+    for(auto h : halfedges(m)) count += is_border(h, m);
+    return count;
+  };
   std::vector<std::pair<K::Point_3, K::Vector_3>> added_points;
   timer.reset();
   ST::complete_by_symmetry_of_points(points, found, std::back_inserter(added_points),
@@ -136,6 +146,8 @@ void time_completion(const std::string& name, unsigned loop)
   const double point_completion = timer.time();
   std::cout << std::setprecision(3) << "| " << name << " | " << faces_before << " | " << detection << " | "
             << mesh_completion << " (" << added_faces.size() << " faces) | " << mesh_completion / detection << " | "
+            << stitched_completion << " (" << stitched_faces.size() << " faces; border halfedges " << border_edges(stitched)
+            << ", " << border_edges(mesh) << " unstitched) | " << stitched_completion / detection << " | "
             << point_completion << " (" << added_points.size() << " of " << points.size() << " points) | "
             << point_completion / detection << " | " << peak_megabytes() << " |" << std::endl;
 }
@@ -153,8 +165,8 @@ try {
     else benchmark_utilities::fail_with_usage(argv[0], usage_options, "unknown option " + option);
   }
   if(complete != 0) {
-    std::cout << "| mesh | faces left | detection (s) | mesh completion (s) | ratio | point completion (s) | ratio"
-                 " | peak memory (MB) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::cout << "| mesh | faces left | detection (s) | mesh completion (s) | ratio | stitched (s) | ratio"
+                 " | point completion (s) | ratio | peak memory (MB) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for(const std::string& name : benchmark_utilities::split(meshes)) time_completion(name, loop);
     return EXIT_SUCCESS;
   }

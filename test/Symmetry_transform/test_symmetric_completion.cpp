@@ -7,8 +7,9 @@
 // at least twice nearer to the completed set than to the scan, no point is added within half the
 // scan's spacing of a scan point, the added normals point out; meshes cut open get the images of
 // the missing faces, oriented outward, none where the mesh has surface; results move with the
-// shape, do not depend on the threads, agree on Surface_mesh and Polyhedron_3; a cancel adds
-// nothing; bad input is rejected.
+// shape, do not depend on the threads, agree on Surface_mesh and Polyhedron_3; stitched, halves
+// and quarters cut at their planes close up, and a cut across the plane is met without a gap or
+// an overlap; a cancel adds nothing; bad input is rejected.
 
 #include <CGAL/Symmetry_transform/symmetrization.h>
 
@@ -17,6 +18,9 @@
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/transform.h>
 #include <CGAL/Symmetry_transform/internal/common/cgal_aabb.h>
 
 #include <gtest/gtest.h>
@@ -233,6 +237,98 @@ TEST(SymmetricCompletion, MeshCutOpenGetsTheMissingFacesOrientedOutwardAndNoneWh
         << "an added face is oriented inward";
     }
   }
+}
+
+// The faces of `mesh` whose centroids do not lie on the positive side of any of `planes`.
+template <typename Mesh>
+Mesh part_behind(Mesh mesh, const std::vector<Plane_3>& planes)
+{
+  std::vector<typename boost::graph_traits<Mesh>::face_descriptor> beyond;
+  for(auto f : faces(mesh)) {
+    const Point_3 c = face_centroids(mesh, {f})[0];
+    if(std::any_of(planes.begin(), planes.end(), [&](const Plane_3& p) { return p.a() * c.x() + p.b() * c.y() + p.c() * c.z() + p.d() > 1e-9; }))
+      beyond.push_back(f);
+  }
+  for(auto f : beyond) CGAL::Euler::remove_face(halfedge(f, mesh), mesh);
+  mesh.collect_garbage();
+  return mesh;
+}
+
+// Halves, quarters and eighths of an ellipsoid (a subdivided icosahedron, its tessellation
+// symmetric under its three planes), moved and completed with stitching: closed up into the
+// whole ellipsoid, a valid mesh without self-intersection, of the whole's faces and volume, the
+// input's vertices unchanged; Polyhedron_3 agrees.
+TEST(SymmetricCompletion, StitchingClosesUpModelsCutAtTheirPlanes)
+{
+  CGAL::Random rng(3806);
+  const Shape<Surface_mesh> shape = ellipsoid<Surface_mesh>(1., 0.6, 0.35, 4);
+  for(std::size_t cuts : {1, 2, 3}) {
+    const Motion m = random_motion(rng);
+    const Shape<Surface_mesh> whole = moved(shape, m);
+    const std::vector<Plane_3> planes(whole.planes.begin(), whole.planes.begin() + std::ptrdiff_t(cuts));
+    Surface_mesh mesh = part_behind(shape.mesh, std::vector<Plane_3>(shape.planes.begin(), shape.planes.begin() + std::ptrdiff_t(cuts)));
+    PMP::transform(m, mesh);
+    const Surface_mesh input = mesh;
+    Polyhedron polyhedron;
+    CGAL::copy_face_graph(mesh, polyhedron);
+    std::vector<Surface_mesh::Face_index> added;
+    std::vector<Polyhedron::Facet_handle> added_to_polyhedron;
+    const auto np = CGAL::parameters::stitch_borders(true);
+    ST::complete_by_symmetry(mesh, planes, std::back_inserter(added), np);
+    ST::complete_by_symmetry(polyhedron, planes, std::back_inserter(added_to_polyhedron), np);
+    const double volume = PMP::volume(mesh), whole_volume = PMP::volume(whole.mesh);
+    std::cout << "cut by " << cuts << " plane(s): " << num_faces(input) << " faces, " << added.size()
+              << " added; volume " << volume / whole_volume << " of the whole\n";
+    EXPECT_EQ(num_faces(mesh), num_faces(whole.mesh)) << cuts;
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh)) << cuts;
+    EXPECT_TRUE(CGAL::is_closed(mesh)) << cuts;
+    EXPECT_FALSE(PMP::does_self_intersect(mesh)) << cuts;
+    EXPECT_NEAR(volume / whole_volume, 1., 1e-9) << cuts;
+    for(auto v : vertices(input)) EXPECT_EQ(mesh.point(v), input.point(v)) << cuts;
+    EXPECT_EQ(added_to_polyhedron.size(), added.size()) << cuts;
+    EXPECT_TRUE(CGAL::is_closed(polyhedron)) << cuts;
+  }
+}
+
+// A mesh cut away across its plane (not at it): the added faces reach up to the cut, neither
+// overlapping the input nor leaving a gap wider than an edge; the area is the whole shape's.
+TEST(SymmetricCompletion, StitchingReachesTheBorderOfACutAcrossThePlane)
+{
+  CGAL::Random rng(3807);
+  const Motion m = random_motion(rng);
+  const Shape<Surface_mesh> whole = moved(ellipsoid<Surface_mesh>(1., 0.6, 0.35, 5), m);
+  const Surface_mesh cut = cut_away(whole.mesh, m.transform(Vector_3(1, 0.2, 0.1)), 0.3);
+  const std::vector<Plane_3> plane{whole.planes[0]};
+  const double edge = median_edge_length(whole.mesh), whole_area = PMP::area(whole.mesh);
+  const auto farthest_and_area = [&](const auto& np) {
+    Surface_mesh mesh = cut;
+    std::vector<Surface_mesh::Face_index> added;
+    ST::complete_by_symmetry(mesh, plane, std::back_inserter(added), np);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+    const Tree<Surface_mesh> tree(faces(mesh).first, faces(mesh).second, mesh);
+    double farthest = 0.;
+    CGAL::Random samples_rng(3808);
+    for(const Point_3& q : surface_points(whole.mesh, 3000, samples_rng)) farthest = (std::max)(farthest, distance_to(tree, q));
+    return std::make_pair(farthest / edge, PMP::area(mesh) / whole_area);
+  };
+  const auto [separate_gap, separate_area] = farthest_and_area(CGAL::parameters::default_values());
+  const auto [stitched_gap, stitched_area] = farthest_and_area(CGAL::parameters::stitch_borders(true));
+  std::cout << "largest gap " << separate_gap << " edges and area " << separate_area << " of the whole as separate "
+            << "components; " << stitched_gap << " edges, area " << stitched_area << " stitched\n";
+  EXPECT_LE(stitched_gap, 1.);
+  EXPECT_NEAR(stitched_area, 1., 0.01);
+  EXPECT_LT(stitched_gap, separate_gap);
+  EXPECT_LT(std::abs(stitched_area - 1.), std::abs(separate_area - 1.));
+  const auto completed_points = [&](unsigned threads) {
+    Surface_mesh mesh = cut;
+    std::vector<Surface_mesh::Face_index> added;
+    ST::complete_by_symmetry(mesh, plane, std::back_inserter(added),
+                             CGAL::parameters::stitch_borders(true).number_of_threads(threads));
+    std::vector<Point_3> points;
+    for(auto v : vertices(mesh)) points.push_back(mesh.point(v));
+    return points;
+  };
+  EXPECT_EQ(completed_points(1), completed_points(2));
 }
 
 // The added points, in the frame of the shape (the inverse of `m` applied).

@@ -15,6 +15,7 @@
 #include <CGAL/Symmetry_transform/internal/symmetrization/mesh_arrays.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/symmetrize_vertices.h>
 
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -130,7 +131,7 @@ void write_positions(TriangleMesh& tm, const std::vector<std::size_t>& used_inde
 {
   auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                           get_property_map(CGAL::vertex_point, tm));
-  const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto index = vertex_index_map_of(tm, np);
   double sum = 0., largest = 0.;
   for(auto v : vertices(tm)) {
     const std::size_t i = used_index[vertex_index(tm, index, v)];
@@ -244,6 +245,57 @@ OutputIterator complete_points(const PointRange& points, const PlaneRange& plane
   return out;
 }
 
+// The vertices of `tm` by the index of the vertices that faces use (`used_index`).
+template <typename TriangleMesh, typename NamedParameters>
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>
+used_vertices(const TriangleMesh& tm, const std::vector<std::size_t>& used_index, std::size_t used_count,
+              const NamedParameters& np)
+{
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> result(used_count);
+  const auto index = vertex_index_map_of(tm, np);
+  for(auto v : vertices(tm)) {
+    const std::size_t i = used_index[vertex_index(tm, index, v)];
+    if(i != unused_vertex) result[i] = v;
+  }
+  return result;
+}
+
+// Adds the faces of `completion` to `tm` (`vertex_of`: its vertices that faces use, numbered as in
+// `completion`) and stitches them where `completion` says, each joined vertex first put where the
+// vertex it is joined to is.
+template <typename GT, typename TriangleMesh, typename VertexPointMap, typename OutputIterator>
+OutputIterator add_completion(TriangleMesh& tm, VertexPointMap vpm, const Stitched_completion& completion,
+                              std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertex_of,
+                              const Local_frame& frame, OutputIterator out)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  const std::size_t input_count = vertex_of.size();
+  for(const Eigen::Vector3d& p : completion.added.points) {
+    vertex_of.push_back(add_vertex(tm));
+    put(vpm, vertex_of.back(), to_point<GT>(frame.to_input(p)));
+  }
+  const std::vector<std::size_t> id = joined_ids(vertex_of.size(), completion.stitches);
+  for(std::size_t v = input_count; v < vertex_of.size(); ++v)
+    if(id[v] != v) put(vpm, vertex_of[v], get(vpm, vertex_of[id[v]]));
+  for(const auto& f : completion.added.faces) {
+    const std::array<vertex_descriptor, 3> corners{vertex_of[input_count + f[0]], vertex_of[input_count + f[1]],
+                                                   vertex_of[input_count + f[2]]};
+    const auto face = CGAL::Euler::add_face(corners, tm);
+    if(face != boost::graph_traits<TriangleMesh>::null_face()) *out++ = face;
+  }
+  // The border halfedges opposite the stitched sides: the earlier part's is kept.
+  std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> pairs;
+  for(const Stitch& s : completion.stitches) {
+    const auto kept = halfedge(vertex_of[s.kept_side[1]], vertex_of[s.kept_side[0]], tm);
+    const auto removed = halfedge(vertex_of[s.removed_side[1]], vertex_of[s.removed_side[0]], tm);
+    if(kept.second && removed.second && is_border(kept.first, tm) && is_border(removed.first, tm))
+      pairs.emplace_back(kept.first, removed.first);
+  }
+  if(!pairs.empty()) Polygon_mesh_processing::stitch_borders(tm, pairs, parameters::vertex_point_map(vpm));
+  return out;
+}
+
 template <typename GT, typename TriangleMesh, typename PlaneRange, typename RotationRange, typename OutputIterator,
           typename NamedParameters>
 OutputIterator complete_mesh(TriangleMesh& tm, const PlaneRange& planes, const RotationRange& rotations,
@@ -251,27 +303,24 @@ OutputIterator complete_mesh(TriangleMesh& tm, const PlaneRange& planes, const R
 {
   check_named_parameters(np);
   const unsigned threads = read_number_of_threads(np);
-  Mesh_arrays mesh = used_part(mesh_arrays(tm, np));
+  const bool stitch = parameters::choose_parameter(parameters::get_parameter(np, internal_np::st_stitch_borders), false);
+  const Mesh_arrays all = mesh_arrays(tm, np);
+  const std::vector<std::size_t> used_index = used_vertex_indices(all);
+  Mesh_arrays mesh = used_part(all, used_index);
   const Local_frame frame = local_frame(mesh.points);
   const std::vector<Rigid_motion> group = exact_group_in(frame, planes, rotations);
   const double coverage = local_coverage_distance(np, frame);
   for(Eigen::Vector3d& p : mesh.points) p = frame.to_local(p);
-  const Added_faces added = with_progress(
-    np, [&] { return completion_of_mesh(mesh.points, mesh.faces, group, coverage, threads); },
-    [] { return Added_faces(); });
+  const Stitched_completion completion = with_progress(
+    np,
+    [&] {
+      return stitch ? stitched_completion_of_mesh(mesh.points, mesh.faces, group, coverage, threads)
+                    : Stitched_completion{completion_of_mesh(mesh.points, mesh.faces, group, coverage, threads), {}};
+    },
+    [] { return Stitched_completion(); });
   auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                           get_property_map(CGAL::vertex_point, tm));
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  std::vector<vertex_descriptor> vertex_of;
-  for(const Eigen::Vector3d& p : added.points) {
-    vertex_of.push_back(add_vertex(tm));
-    put(vpm, vertex_of.back(), to_point<GT>(frame.to_input(p)));
-  }
-  for(const auto& f : added.faces) {
-    const auto face = CGAL::Euler::add_face(std::array<vertex_descriptor, 3>{vertex_of[f[0]], vertex_of[f[1]], vertex_of[f[2]]}, tm);
-    if(face != boost::graph_traits<TriangleMesh>::null_face()) *out++ = face;
-  }
-  return out;
+  return add_completion<GT>(tm, vpm, completion, used_vertices(tm, used_index, mesh.points.size(), np), frame, out);
 }
 
 } // namespace internal
@@ -539,8 +588,13 @@ OutputIterator complete_by_symmetry_of_points(const PointRange& points, const Pl
  * distance from the surface and from the faces added before), as `complete_by_symmetry_of_points()`
  * does for points. The added faces form new components, with their own vertices, oriented as
  * the faces they are images of; the faces of the input are unchanged. The gap between the input
- * and the added part is at most about the coverage distance: close it with
- * `CGAL::Polygon_mesh_processing` (snapping the borders, or filling the holes) where needed.
+ * and the added part is at most about the coverage distance. With `stitch_borders(true)`, the
+ * added faces reach up to the borders of the input, and are stitched to it (with
+ * `CGAL::Polygon_mesh_processing::stitch_borders()`) along the border edges whose two ends lie
+ * within a quarter of the median edge length of the ends of a border edge of the input (or of the
+ * images added before), where every vertex stays manifold: a model cut at its mirror planes is
+ * closed up; elsewhere a gap narrower than an edge stays (fill it with
+ * `CGAL::Polygon_mesh_processing::triangulate_hole()` where needed).
  *
  * \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` whose faces are triangles
  * \tparam PlaneRange a range of `GT::Plane_3` or of `Principal_symmetry<GT>`
@@ -556,6 +610,11 @@ OutputIterator complete_by_symmetry_of_points(const PointRange& points, const Pl
  *     \cgalParamDescription{the image of a face whose centroid lies within this distance of the surface is not added}
  *     \cgalParamType{`double`\, positive}
  *     \cgalParamDefault{twice the median edge length\, at least 5 % of the radius of the mesh}
+ *   \cgalParamNEnd
+ *   \cgalParamNBegin{stitch_borders}
+ *     \cgalParamDescription{whether the added faces reach up to the input's borders and are stitched to them where their vertices meet}
+ *     \cgalParamType{`bool`}
+ *     \cgalParamDefault{`false`: the added faces are separate components}
  *   \cgalParamNEnd
  *   \cgalParamThreads{the threads of the closest-point searches\, at most 1024 (0: the default); they change the speed only\, never the result}
  *   \cgalParamCallback{nothing added}

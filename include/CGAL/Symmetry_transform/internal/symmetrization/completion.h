@@ -16,12 +16,15 @@
 // beyond the fine one: a hole is filled up to its border, while a part of the shape that is only a
 // little asymmetric (its image a few spacings off the surface) is not given a second layer.
 // Every image is measured independently and the regions do not depend on the order in which they
-// grow: the result does not depend on the threads.
+// grow: the result does not depend on the threads. Asked to stitch, the regions of a mesh grow on
+// up to the borders of what is present (completion_to_borders), and the parts are then stitched
+// where their border vertices meet (border_stitching.h).
 // All in the frame where the shape has its centre at the origin and radius about 1.
 
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
+#include <CGAL/Symmetry_transform/internal/symmetrization/border_stitching.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/nearby_surface.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/symmetry_group.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/vertex_orbits.h>
@@ -33,6 +36,7 @@
 #include <cmath>
 #include <cstddef>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL::Symmetry_transform::internal {
@@ -108,16 +112,16 @@ struct Coverage
 };
 
 // The items whose images are missing (see the head of this file): the connected regions, through
-// `for_each_neighbour(i, f)` (f called on each neighbour of item i), of the images beyond the fine
-// distance that reach beyond the coarse one.
-template <typename ForEachNeighbour>
-std::vector<char> missing_regions(const std::vector<double>& distance, const Coverage& coverage,
+// `for_each_neighbour(i, f)` (f called on each neighbour of item i), of the images that
+// `extends(i)`, beyond the fine distance, that reach beyond the coarse one.
+template <typename Extends, typename ForEachNeighbour>
+std::vector<char> missing_regions(const std::vector<double>& distance, double coarse, const Extends& extends,
                                   const ForEachNeighbour& for_each_neighbour)
 {
   std::vector<char> missing(distance.size(), 0);
   std::vector<std::size_t> stack;
   for(std::size_t i = 0; i < distance.size(); ++i)
-    if(distance[i] > coverage.coarse) {
+    if(distance[i] > coarse) {
       missing[i] = 1;
       stack.push_back(i);
     }
@@ -125,7 +129,7 @@ std::vector<char> missing_regions(const std::vector<double>& distance, const Cov
     const std::size_t i = stack.back();
     stack.pop_back();
     for_each_neighbour(i, [&](std::size_t j) {
-      if(!missing[j] && distance[j] > coverage.fine) {
+      if(!missing[j] && extends(j)) {
         missing[j] = 1;
         stack.push_back(j);
       }
@@ -162,8 +166,9 @@ inline std::vector<Added_point> completion_of_points(const std::vector<Eigen::Ve
     report_progress(g - 1, group.size() - 1);
     std::vector<Eigen::Vector3d> images;
     for(const Eigen::Vector3d& p : points) images.push_back(group[g](p));
+    const std::vector<double> distance = distances_to_present(images, added_points, distance_to_input, threads);
     const std::vector<char> missing = missing_regions(
-      distances_to_present(images, added_points, distance_to_input, threads), coverage, for_each_neighbour);
+      distance, coverage.coarse, [&](std::size_t j) { return distance[j] > coverage.fine; }, for_each_neighbour);
     for(std::size_t i = 0; i < points.size(); ++i)
       if(missing[i])
         added.push_back({images[i], normals.empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(group[g].linear * normals[i])});
@@ -177,13 +182,14 @@ struct Added_faces
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::array<std::size_t, 3>> faces;
+  std::vector<std::size_t> part; // of each point: the number of the motion whose image it is
 };
 
 // The images under `motion` of the faces `chosen` (a face's corners reversed under a reflection, so
 // that the image keeps the outward orientation), each vertex image made once, appended to `added`.
 inline void add_face_images(const std::vector<Eigen::Vector3d>& points,
                             const std::vector<std::array<std::size_t, 3>>& faces, const std::vector<char>& chosen,
-                            const Rigid_motion& motion, Added_faces& added)
+                            const Rigid_motion& motion, std::size_t part, Added_faces& added)
 {
   const bool reflects = motion.linear.determinant() < 0.;
   std::vector<std::size_t> image_of(points.size(), no_vertex);
@@ -195,12 +201,22 @@ inline void add_face_images(const std::vector<Eigen::Vector3d>& points,
       if(v == no_vertex) {
         v = added.points.size();
         added.points.push_back(motion(points[faces[f][k]]));
+        added.part.push_back(part);
       }
       image[k] = v;
     }
     if(reflects) std::swap(image[1], image[2]);
     added.faces.push_back(image);
   }
+}
+
+// For each face, a function calling `visit` on each face that shares a vertex with it (itself too).
+inline auto faces_sharing_a_vertex(const Face_array& faces, const Faces_around_vertices& rings)
+{
+  return [&faces, &rings](std::size_t f, const auto& visit) {
+    for(std::size_t v : faces[f])
+      for(std::size_t k = rings.first[v]; k < rings.first[v + 1]; ++k) visit(rings.around[k]);
+  };
 }
 
 // The images of the faces of a mesh under the motions of `group` (but the identity) that are
@@ -218,24 +234,152 @@ inline Added_faces completion_of_mesh(const std::vector<Eigen::Vector3d>& points
     std::size_t start = Nearby_surface::unknown;
     return (q - surface.closest(q, points, start)).norm();
   };
-  const Faces_around_vertices& rings = surface.rings();
-  const auto for_each_neighbour = [&](std::size_t f, const auto& visit) {
-    for(std::size_t v : faces[f])
-      for(std::size_t k = rings.first[v]; k < rings.first[v + 1]; ++k) visit(rings.around[k]);
-  };
+  const auto for_each_neighbour = faces_sharing_a_vertex(faces, surface.rings());
   Added_faces added;
   std::vector<Eigen::Vector3d> added_centroids;
   for(std::size_t g = 1; g < group.size(); ++g) {
     report_progress(g - 1, group.size() - 1);
     std::vector<Eigen::Vector3d> images;
     for(const auto& f : faces) images.push_back(group[g]((points[f[0]] + points[f[1]] + points[f[2]]) / 3.));
+    const std::vector<double> distance = distances_to_present(images, added_centroids, distance_to_input, threads);
     const std::vector<char> missing = missing_regions(
-      distances_to_present(images, added_centroids, distance_to_input, threads), coverage, for_each_neighbour);
-    add_face_images(points, faces, missing, group[g], added);
+      distance, coverage.coarse, [&](std::size_t j) { return distance[j] > coverage.fine; }, for_each_neighbour);
+    add_face_images(points, faces, missing, group[g], g, added);
     for(std::size_t f = 0; f < faces.size(); ++f)
       if(missing[f]) added_centroids.push_back(images[f]);
   }
   return added;
+}
+
+// Samples of a triangle, each standing for a quarter of its area (barycentric weights): its
+// centroid and the centroids of its three corner quarters in the midpoint subdivision.
+constexpr std::array<std::array<double, 3>, 4> quarter_samples{
+  {{1. / 3., 1. / 3., 1. / 3.}, {4. / 6., 1. / 6., 1. / 6.}, {1. / 6., 4. / 6., 1. / 6.}, {1. / 6., 1. / 6., 4. / 6.}}};
+// A closest point this near (in radii) to a border side or a border vertex lies on the border.
+constexpr double on_border_tolerance = 1e-9;
+// The added vertices are joined to vertices of the input within this many median edge lengths:
+// those of a model cut at its mirror plane are their own images, to the plane's precision.
+constexpr double stitch_snap_edges = 0.25;
+
+inline double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  const Eigen::Vector3d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0. ? std::clamp((p - a).dot(ab) / length2, 0., 1.) : 0.;
+  return (p - a - t * ab).norm();
+}
+
+// The mesh present at a step of the completion up to the borders (the input and the faces added
+// so far): the distance of a query to it, and whether a triangle lies over it or beyond its borders.
+class Present_surface
+{
+public:
+  explicit Present_surface(Added_faces mesh)
+    : mesh_(std::move(mesh)), nearest_(mesh_.points), surface_(nearest_, mesh_.faces, mesh_.points.size()),
+      border_(face_border_sides(mesh_.faces)), on_border_(border_vertices(mesh_.faces, border_, mesh_.points.size()))
+  {}
+
+  double distance(const Eigen::Vector3d& q) const
+  {
+    return std::sqrt(surface_.closest_on_face(q, mesh_.points).squared_distance);
+  }
+
+  // Whether at least half of the triangle `corners` lies over the surface, within `reach` of it.
+  bool covers(const std::array<Eigen::Vector3d, 3>& corners, double reach) const
+  {
+    std::size_t over = 0;
+    for(const auto& w : quarter_samples) over += lies_over(w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2], reach);
+    return 2 * over >= quarter_samples.size();
+  }
+
+private:
+  // Whether q lies within `reach` of the surface and over it: its closest point is not on a
+  // border (q would lie beyond that border).
+  bool lies_over(const Eigen::Vector3d& q, double reach) const
+  {
+    const Nearby_surface::Closest c = surface_.closest_on_face(q, mesh_.points);
+    if(c.squared_distance > reach * reach || c.face == mesh_.faces.size()) return false;
+    const std::array<std::size_t, 3>& f = mesh_.faces[c.face];
+    for(std::size_t k = 0; k < 3; ++k) {
+      const Eigen::Vector3d &a = mesh_.points[f[k]], &b = mesh_.points[f[(k + 1) % 3]];
+      if(on_border_[f[k]] && (c.point - a).norm() <= on_border_tolerance) return false;
+      if(border_[c.face][k] && distance_to_segment(c.point, a, b) <= on_border_tolerance) return false;
+    }
+    return true;
+  }
+
+  Added_faces mesh_;
+  Nearest_point nearest_;
+  Nearby_surface surface_;
+  std::vector<std::array<bool, 3>> border_;
+  std::vector<char> on_border_;
+};
+
+// The input and the faces added so far, as one mesh (the input's part 0).
+inline Added_faces joined(const std::vector<Eigen::Vector3d>& points, const Face_array& faces, const Added_faces& added)
+{
+  Added_faces result{points, faces, std::vector<std::size_t>(points.size(), 0)};
+  const std::size_t offset = points.size();
+  result.points.insert(result.points.end(), added.points.begin(), added.points.end());
+  result.part.insert(result.part.end(), added.part.begin(), added.part.end());
+  for(const auto& f : added.faces) result.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+  return result;
+}
+
+// completion_of_mesh() grown up to the borders of what is present (`edge`: the median edge
+// length): next to a missing region, the image of a face within the fine distance of the surface
+// is added too when most of it lies beyond a border rather than over the surface: the strip
+// between a cut and its image. Distances are measured to the surface of the input and of the
+// faces added before.
+inline Added_faces completion_to_borders(const std::vector<Eigen::Vector3d>& points, const Face_array& faces,
+                                         const std::vector<Rigid_motion>& group, double coverage_distance,
+                                         double edge, unsigned threads)
+{
+  const Coverage coverage = coverage_of(coverage_distance, mesh_coverage_spacings, edge);
+  const Faces_around_vertices rings(faces, points.size());
+  const auto for_each_neighbour = faces_sharing_a_vertex(faces, rings);
+  Added_faces added;
+  for(std::size_t g = 1; g < group.size(); ++g) {
+    report_progress(g - 1, group.size() - 1);
+    const Present_surface present(joined(points, faces, added));
+    const auto image = [&](std::size_t f) {
+      return std::array<Eigen::Vector3d, 3>{group[g](points[faces[f][0]]), group[g](points[faces[f][1]]),
+                                            group[g](points[faces[f][2]])};
+    };
+    std::vector<double> distance(faces.size());
+    parallel_for(faces.size(), threads, [&](unsigned, std::size_t begin, std::size_t end) {
+      for(std::size_t f = begin; f < end && parallel_step(); ++f) {
+        const std::array<Eigen::Vector3d, 3> c = image(f);
+        distance[f] = present.distance((c[0] + c[1] + c[2]) / 3.);
+      }
+    });
+    throw_if_cancelled();
+    const auto extends = [&](std::size_t f) {
+      return distance[f] > coverage.fine || !present.covers(image(f), coverage.fine);
+    };
+    add_face_images(points, faces, missing_regions(distance, coverage.coarse, extends, for_each_neighbour), group[g], g,
+                    added);
+  }
+  return added;
+}
+
+// The completion of a mesh, and the stitches that join the added faces to the input's borders and
+// to each other (vertices numbered as the input's, then the added ones).
+struct Stitched_completion
+{
+  Added_faces added;
+  std::vector<Stitch> stitches;
+};
+
+inline Stitched_completion stitched_completion_of_mesh(const std::vector<Eigen::Vector3d>& points, const Face_array& faces,
+                                                       const std::vector<Rigid_motion>& group,
+                                                       double coverage_distance, unsigned threads)
+{
+  const double edge = median_edge_length(points, faces);
+  Stitched_completion result{completion_to_borders(points, faces, group, coverage_distance, edge, threads), {}};
+  const Added_faces all = joined(points, faces, result.added);
+  result.stitches = border_stitches(all.points, all.faces, all.part, stitch_snap_edges * edge);
+  return result;
 }
 
 } // namespace CGAL::Symmetry_transform::internal

@@ -49,12 +49,24 @@ std::size_t vertex_index(const TriangleMesh& tm, const VertexIndexMap& index,
   return i;
 }
 
+// The vertex index map of `np`, else an initialized internal one. The user's map is taken as it
+// is, vertex_index() checking its indices: CGAL's own initialization asserts on a map out of range
+// (in builds with assertions) before our clear error could be thrown.
+template <typename TriangleMesh, typename NamedParameters>
+auto vertex_index_map_of(const TriangleMesh& tm, const NamedParameters& np)
+{
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::vertex_index_t>::value)
+    return parameters::get_parameter(np, internal_np::vertex_index);
+  else
+    return CGAL::get_initialized_vertex_index_map(tm, np);
+}
+
 // Throws on a mesh with no face, a face that is not a triangle, or a non-finite coordinate.
 template <typename TriangleMesh, typename NamedParameters>
 Mesh_arrays mesh_arrays(const TriangleMesh& tm, const NamedParameters& np)
 {
   const auto vpm = vertex_point_map(tm, np);
-  const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
+  const auto index = vertex_index_map_of(tm, np);
   Mesh_arrays mesh;
   mesh.points.assign(num_vertices(tm), Eigen::Vector3d::Zero()); // removed vertices (garbage) included
   for(auto v : vertices(tm)) mesh.points[vertex_index(tm, index, v)] = to_eigen(to_dpoint(get(vpm, v)));

@@ -52,6 +52,13 @@ public:
 
   const Faces_around_vertices& rings() const { return rings_; }
 
+  struct Closest
+  {
+    Eigen::Vector3d point;
+    double squared_distance;
+    std::size_t face; // the number of faces when the closest point is the vertex alone (no face around it)
+  };
+
   // The closest point to q of the faces around the vertex nearest to q, at `points`, found from
   // `vertex`, the answer of a query nearby (the same point's image at the previous step): a walk
   // to ever nearer neighbours instead of a search in the Kd-tree (`unknown`: a search). `vertex`
@@ -60,7 +67,13 @@ public:
                           std::size_t& vertex) const
   {
     vertex = vertex == unknown ? nearest_(q).index : nearer_neighbour(q, points, vertex);
-    return closest_around(q, points, vertex);
+    return closest_around(q, points, vertex).point;
+  }
+
+  // The closest point to q, and its face, searched from the vertex nearest to q.
+  Closest closest_on_face(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points) const
+  {
+    return closest_around(q, points, nearest_(q).index);
   }
 
   static constexpr std::size_t unknown = std::size_t(-1);
@@ -80,24 +93,16 @@ private:
 
   // The closest point to q of the faces around `vertex`, then of those around the corners of the
   // face where it lies: a closest point on an edge of the first ring may lie across it.
-  Eigen::Vector3d closest_around(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points,
-                                 std::size_t vertex) const
+  Closest closest_around(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points, std::size_t vertex) const
   {
     Closest best{points[vertex], (q - points[vertex]).squaredNorm(), faces_.size()};
     improve_around(q, points, vertex, best);
-    if(best.face == faces_.size()) return best.point;
+    if(best.face == faces_.size()) return best;
     const std::array<std::size_t, 3> corners = faces_[best.face];
     for(std::size_t c : corners)
       if(c != vertex) improve_around(q, points, c, best);
-    return best.point;
+    return best;
   }
-
-  struct Closest
-  {
-    Eigen::Vector3d point;
-    double squared_distance;
-    std::size_t face;
-  };
 
   void improve_around(const Eigen::Vector3d& q, const std::vector<Eigen::Vector3d>& points, std::size_t vertex,
                       Closest& best) const
