@@ -15,7 +15,6 @@
 #include <CGAL/Symmetry_transform/internal/symmetrization/mesh_arrays.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/symmetrize_vertices.h>
 
-#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -261,38 +260,31 @@ used_vertices(const TriangleMesh& tm, const std::vector<std::size_t>& used_index
 }
 
 // Adds the faces of `completion` to `tm` (`vertex_of`: its vertices that faces use, numbered as in
-// `completion`) and stitches them where `completion` says, each joined vertex first put where the
-// vertex it is joined to is.
+// `completion`). An added vertex joined by a stitch to an earlier one is not made: the faces use
+// the earlier vertex, so the input's vertices stay, and no border is left between the two.
 template <typename GT, typename TriangleMesh, typename VertexPointMap, typename OutputIterator>
 OutputIterator add_completion(TriangleMesh& tm, VertexPointMap vpm, const Stitched_completion& completion,
                               std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertex_of,
                               const Local_frame& frame, OutputIterator out)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   const std::size_t input_count = vertex_of.size();
-  for(const Eigen::Vector3d& p : completion.added.points) {
+  const std::vector<std::size_t> id = joined_ids(input_count + completion.added.points.size(), completion.stitches);
+  for(std::size_t a = 0; a < completion.added.points.size(); ++a) {
+    const std::size_t v = input_count + a;
+    if(id[v] != v) { // joined to a vertex of smaller number, made already
+      vertex_of.push_back(vertex_of[id[v]]);
+      continue;
+    }
     vertex_of.push_back(add_vertex(tm));
-    put(vpm, vertex_of.back(), to_point<GT>(frame.to_input(p)));
+    put(vpm, vertex_of.back(), to_point<GT>(frame.to_input(completion.added.points[a])));
   }
-  const std::vector<std::size_t> id = joined_ids(vertex_of.size(), completion.stitches);
-  for(std::size_t v = input_count; v < vertex_of.size(); ++v)
-    if(id[v] != v) put(vpm, vertex_of[v], get(vpm, vertex_of[id[v]]));
   for(const auto& f : completion.added.faces) {
     const std::array<vertex_descriptor, 3> corners{vertex_of[input_count + f[0]], vertex_of[input_count + f[1]],
                                                    vertex_of[input_count + f[2]]};
     const auto face = CGAL::Euler::add_face(corners, tm);
     if(face != boost::graph_traits<TriangleMesh>::null_face()) *out++ = face;
   }
-  // The border halfedges opposite the stitched sides: the earlier part's is kept.
-  std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> pairs;
-  for(const Stitch& s : completion.stitches) {
-    const auto kept = halfedge(vertex_of[s.kept_side[1]], vertex_of[s.kept_side[0]], tm);
-    const auto removed = halfedge(vertex_of[s.removed_side[1]], vertex_of[s.removed_side[0]], tm);
-    if(kept.second && removed.second && is_border(kept.first, tm) && is_border(removed.first, tm))
-      pairs.emplace_back(kept.first, removed.first);
-  }
-  if(!pairs.empty()) Polygon_mesh_processing::stitch_borders(tm, pairs, parameters::vertex_point_map(vpm));
   return out;
 }
 
@@ -589,11 +581,11 @@ OutputIterator complete_by_symmetry_of_points(const PointRange& points, const Pl
  * does for points. The added faces form new components, with their own vertices, oriented as
  * the faces they are images of; the faces of the input are unchanged. The gap between the input
  * and the added part is at most about the coverage distance. With `stitch_borders(true)`, the
- * added faces reach up to the borders of the input, and are stitched to it (with
- * `CGAL::Polygon_mesh_processing::stitch_borders()`) along the border edges whose two ends lie
- * within a quarter of the median edge length of the ends of a border edge of the input (or of the
- * images added before), where every vertex stays manifold: a model cut at its mirror planes is
- * closed up; elsewhere a gap narrower than an edge stays (fill it with
+ * added faces reach up to the borders of the input, and are stitched to it along the border edges
+ * whose two ends lie within a quarter of the median edge length of the ends of a border edge of
+ * the input (or of the images added before), where every vertex stays manifold: the added faces
+ * then use the input's vertices there (no input vertex, face or position changes). A model cut at
+ * its mirror planes is closed up; elsewhere a gap narrower than an edge stays (fill it with
  * `CGAL::Polygon_mesh_processing::triangulate_hole()` where needed).
  *
  * \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` whose faces are triangles

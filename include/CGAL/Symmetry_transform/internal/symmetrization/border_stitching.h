@@ -10,7 +10,8 @@
 // earlier one: where a border edge runs between two vertices that lie, each, within the snapping
 // distance of the two ends of a border edge of an earlier part (the vertices of a model cut at its
 // mirror plane are their own images). Only stitches that leave every vertex manifold are kept: a
-// vertex joined on one side of its fan and open on another would bound two holes.
+// vertex joined on one side of its fan and open on another would bound two holes. A stitched
+// vertex of a later part is not made: its faces use the vertex it is joined to.
 
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/symmetrization/nearby_surface.h>
@@ -160,11 +161,11 @@ inline std::vector<std::size_t> joined_ids(std::size_t count, const std::vector<
 }
 
 // Whether the faces around the vertices joined into `members` form one fan once joined: no side
-// twice, one border gap at most.
+// twice, and each face linked to the next through a shared side, in one chain or one ring.
 inline bool is_manifold_once_joined(const Face_array& faces, const Faces_around_vertices& rings,
                                     const std::vector<std::size_t>& members, const std::vector<std::size_t>& id)
 {
-  std::vector<std::size_t> out, in; // the other ends of the sides leaving the vertex and entering it
+  std::vector<std::size_t> out, in; // of each face around: the other ends of its sides leaving the vertex and entering it
   for(std::size_t v : members)
     for(std::size_t i = rings.first[v]; i < rings.first[v + 1]; ++i) {
       const std::array<std::size_t, 3>& f = faces[rings.around[i]];
@@ -172,13 +173,20 @@ inline bool is_manifold_once_joined(const Face_array& faces, const Faces_around_
       out.push_back(id[f[(k + 1) % 3]]);
       in.push_back(id[f[(k + 2) % 3]]);
     }
-  std::sort(out.begin(), out.end());
-  std::sort(in.begin(), in.end());
-  if(std::adjacent_find(out.begin(), out.end()) != out.end() || std::adjacent_find(in.begin(), in.end()) != in.end())
+  std::vector<std::size_t> sorted_out = out, sorted_in = in;
+  std::sort(sorted_out.begin(), sorted_out.end());
+  std::sort(sorted_in.begin(), sorted_in.end());
+  if(std::adjacent_find(sorted_out.begin(), sorted_out.end()) != sorted_out.end() ||
+     std::adjacent_find(sorted_in.begin(), sorted_in.end()) != sorted_in.end())
     return false;
-  std::vector<std::size_t> open;
-  std::set_difference(out.begin(), out.end(), in.begin(), in.end(), std::back_inserter(open));
-  return open.size() <= 1;
+  // The face after face i turning about the vertex enters it from where face i leaves it.
+  const auto after = [&](std::size_t i) { return std::size_t(std::find(in.begin(), in.end(), out[i]) - in.begin()); };
+  std::size_t first = 0; // the start of the chain: a face that no face comes before (any, for a ring)
+  for(std::size_t i = 0; i < out.size(); ++i)
+    if(std::find(out.begin(), out.end(), in[i]) == out.end()) first = i;
+  std::size_t visited = 1;
+  for(std::size_t i = after(first); i < out.size() && i != first; i = after(i)) ++visited;
+  return visited == out.size();
 }
 
 // The stitches that leave every joined vertex manifold: those at a vertex that would not be are

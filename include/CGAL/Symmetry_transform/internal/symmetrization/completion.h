@@ -260,6 +260,7 @@ constexpr double on_border_tolerance = 1e-9;
 // The added vertices are joined to vertices of the input within this many median edge lengths:
 // those of a model cut at its mirror plane are their own images, to the plane's precision.
 constexpr double stitch_snap_edges = 0.25;
+constexpr char unknown_yet = 2;
 
 inline double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
@@ -354,8 +355,11 @@ inline Added_faces completion_to_borders(const std::vector<Eigen::Vector3d>& poi
       }
     });
     throw_if_cancelled();
+    std::vector<char> beyond(faces.size(), unknown_yet); // whether an image lies beyond a border, once asked
     const auto extends = [&](std::size_t f) {
-      return distance[f] > coverage.fine || !present.covers(image(f), coverage.fine);
+      if(distance[f] > coverage.fine) return true;
+      if(beyond[f] == unknown_yet) beyond[f] = !present.covers(image(f), coverage.fine);
+      return beyond[f] == 1;
     };
     add_face_images(points, faces, missing_regions(distance, coverage.coarse, extends, for_each_neighbour), group[g], g,
                     added);
