@@ -5,7 +5,8 @@
 
 Compiles the small programs of compile_cost/ (one per public header, the README's program, and a
 program calling segmentation and symmetric remeshing) with the Release flags that the CMake target
-CGAL::Symmetry_transform gives, and prints, for each, the user CPU time and the peak memory of the
+CGAL::Symmetry_transform gives (NAME_precompiled: CGAL::Symmetry_transform_precompiled, whose own
+source, compiled once per program, is precompiled_core), and prints, for each, the user CPU time and the peak memory of the
 compiler against those of compile_cost/reader.cpp, which only reads a Surface_mesh, compiled in the
 same run: absolute seconds do not carry from one machine to another, the ratios do.
 
@@ -23,6 +24,7 @@ import json
 import os
 import pathlib
 import platform
+import re
 import shlex
 import statistics
 import subprocess
@@ -31,8 +33,9 @@ import time
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
-PROGRAMS = sorted(p.stem for p in (HERE / "compile_cost").glob("*.cpp"))
 BASELINE = "reader"
+SOURCES = sorted(p.stem for p in (HERE / "compile_cost").glob("*.cpp"))
+PROGRAMS = SOURCES + [s + "_precompiled" for s in SOURCES if s != BASELINE] + ["precompiled_core"]
 
 
 def configure(build, cgal_dir):
@@ -44,10 +47,11 @@ def configure(build, cgal_dir):
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     commands = {}
     for entry in json.loads((build / "compile_commands.json").read_text()):
-        source = pathlib.Path(entry["file"])
-        if source.parent == HERE / "compile_cost":
-            arguments = entry["arguments"] if "arguments" in entry else shlex.split(entry["command"])
-            commands[source.stem] = (arguments, entry["directory"])
+        arguments = entry["arguments"] if "arguments" in entry else shlex.split(entry["command"])
+        # The object library compile_cost_NAME writes CMakeFiles/compile_cost_NAME.dir/...
+        target = re.search(r"CMakeFiles/compile_cost_(\w+)\.dir/", " ".join(arguments))
+        if target:
+            commands[target.group(1)] = (arguments, entry["directory"])
     return commands
 
 

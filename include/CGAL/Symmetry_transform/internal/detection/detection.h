@@ -247,4 +247,6 @@ detection_of_points(const PointRange& points, const NamedParameters& np)
 
 } // namespace CGAL::Symmetry_transform::internal
 
+#include <CGAL/Symmetry_transform/internal/detection/precompiled_core.h>
+
 #endif // CGAL_SYMMETRY_TRANSFORM_INTERNAL_DETECTION_DETECTION_H

@@ -57,21 +57,26 @@ private:
   // `closest_triangles`, empty, receives the closest triangle of each voxel from the GEDT and
   // goes to the field.
   Triangle_surface(std::vector<Dtriangle>&& surface_triangles, const Grid_options& options,
-                   std::vector<std::int32_t>&& closest_triangles)
-    : local(local_coordinates_of(surface_triangles)), triangles(to_local(local, std::move(surface_triangles))),
-      frame(frame_of_triangles(triangles)),
-      grid(grid_settings(options, frame.radius)),
-      matcher([&] { // the first part of the progress of a surface (progress.h)
-        Progress_stage stage(0., progress_shares::surface_tree);
-        return Triangle_matcher(triangles);
-      }()),
-      gedt([&] {
-        Progress_stage stage(progress_shares::surface_tree, 1.);
-        return gaussian_distance_transform_of_triangles<GT>(triangles, matcher.tree(), frame, grid, &closest_triangles);
-      }()),
-      field(triangles, matcher, std::move(closest_triangles), gedt.origin(), gedt.voxel_size(), gedt.resolution())
-  {}
+                   std::vector<std::int32_t>&& closest_triangles);
 };
+
+// Out of the class, so that a precompiled core (precompiled_core.h) can keep it out of user code.
+template <typename GT>
+Triangle_surface<GT>::Triangle_surface(std::vector<Dtriangle>&& surface_triangles, const Grid_options& options,
+                                       std::vector<std::int32_t>&& closest_triangles)
+  : local(local_coordinates_of(surface_triangles)), triangles(to_local(local, std::move(surface_triangles))),
+    frame(frame_of_triangles(triangles)),
+    grid(grid_settings(options, frame.radius)),
+    matcher([&] { // the first part of the progress of a surface (progress.h)
+      Progress_stage stage(0., progress_shares::surface_tree);
+      return Triangle_matcher(triangles);
+    }()),
+    gedt([&] {
+      Progress_stage stage(progress_shares::surface_tree, 1.);
+      return gaussian_distance_transform_of_triangles<GT>(triangles, matcher.tree(), frame, grid, &closest_triangles);
+    }()),
+    field(triangles, matcher, std::move(closest_triangles), gedt.origin(), gedt.voxel_size(), gedt.resolution())
+{}
 
 } // namespace CGAL::Symmetry_transform::internal
 

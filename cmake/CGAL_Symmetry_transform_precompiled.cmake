@@ -1,0 +1,15 @@
+# The target CGAL::Symmetry_transform_precompiled: CGAL::Symmetry_transform with the detection's
+# heavy templates for CGAL's Epick kernel compiled once, in a static library built in the user's
+# project with the user's flags (internal/detection/precompiled_core.h), instead of in every
+# translation unit that detects symmetries. Used by the package's build and its package config.
+function(cgal_symmetry_transform_add_precompiled_core source)
+  if(TARGET CGAL_Symmetry_transform_precompiled)
+    return()
+  endif()
+  add_library(CGAL_Symmetry_transform_precompiled STATIC EXCLUDE_FROM_ALL "${source}")
+  target_link_libraries(CGAL_Symmetry_transform_precompiled PUBLIC CGAL::Symmetry_transform)
+  target_compile_definitions(CGAL_Symmetry_transform_precompiled PUBLIC CGAL_SYMMETRY_TRANSFORM_PRECOMPILED_CORE)
+  # So that a shared library or a Python module can link it too.
+  set_target_properties(CGAL_Symmetry_transform_precompiled PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  add_library(CGAL::Symmetry_transform_precompiled ALIAS CGAL_Symmetry_transform_precompiled)
+endfunction()
