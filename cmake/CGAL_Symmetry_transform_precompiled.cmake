@@ -1,7 +1,10 @@
 # The target CGAL::Symmetry_transform_precompiled: CGAL::Symmetry_transform with the detection's
-# heavy templates for CGAL's Epick kernel compiled once, in a static library built in the user's
-# project with the user's flags (internal/detection/precompiled_core.h), instead of in every
-# translation unit that detects symmetries. Used by the package's build and its package config.
+# heavy templates for CGAL's Epick kernel and the package's double kernel compiled once per build
+# tree, in a static library built in the user's project (internal/detection/precompiled_core.h),
+# instead of in every translation unit that detects symmetries. It gets the flags of its own
+# directory and of CGAL::Symmetry_transform only: a program built with definitions that change
+# CGAL's or Eigen's code (CGAL_LINKED_WITH_TBB, -ffast-math, another -std, ...) must use the
+# header-only target. Used by the package's build and its package config.
 function(cgal_symmetry_transform_add_precompiled_core source)
   if(TARGET CGAL_Symmetry_transform_precompiled)
     return()

@@ -10,7 +10,7 @@
 // With CGAL_SYMMETRY_TRANSFORM_PRECOMPILED_CORE (set by the CMake target
 // CGAL::Symmetry_transform_precompiled) they are declared `extern template`: a translation unit
 // does not compile them, src/Symmetry_transform/precompiled_core.cpp compiles them once per
-// program. Without it, nothing changes: the package is header-only.
+// build tree. Without it, nothing changes: the package is header-only.
 // What is listed here depends on neither the user's mesh nor the named parameters.
 
 #if defined(CGAL_SYMMETRY_TRANSFORM_PRECOMPILED_CORE) || defined(CGAL_SYMMETRY_TRANSFORM_COMPILING_CORE)
