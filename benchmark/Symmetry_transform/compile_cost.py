@@ -5,10 +5,11 @@
 
 Compiles the small programs of compile_cost/ (one per public header, the README's program, and a
 program calling segmentation and symmetric remeshing) with the Release flags that the CMake target
-CGAL::Symmetry_transform gives (NAME_precompiled: CGAL::Symmetry_transform_precompiled, whose own
-source, compiled once per program, is precompiled_core), and prints, for each, the user CPU time and the peak memory of the
-compiler against those of compile_cost/reader.cpp, which only reads a Surface_mesh, compiled in the
-same run: absolute seconds do not carry from one machine to another, the ratios do.
+CGAL::Symmetry_transform gives (NAME_precompiled: with CGAL::Symmetry_transform_precompiled, whose
+own source, compiled once per build tree, is precompiled_core), and prints, for each, the user CPU
+time and the peak memory of the compiler against those of compile_cost/reader.cpp, which only reads
+a Surface_mesh, compiled in the same run: absolute seconds do not carry from one machine to another,
+the ratios do.
 
     python3 benchmark/Symmetry_transform/compile_cost.py [--build DIR] [--cgal-dir DIR]
         [--programs reader,readme,...] [--repeats N] [--jobs J] [--output FILE.md]
