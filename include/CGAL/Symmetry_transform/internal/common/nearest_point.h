@@ -9,6 +9,7 @@
 // (the GEDT of a point set, ISP on a point set, the mirror faces of the remeshing, the
 // symmetrization and the completion).
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 
@@ -85,8 +86,13 @@ private:
 };
 
 // The k nearest other points of each of the first `count` points of `nearest`.
-inline std::vector<std::vector<std::size_t>> nearest_neighbourhoods(const Nearest_point& nearest, std::size_t count,
-                                                                    std::size_t k, unsigned threads)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> nearest_neighbourhoods(const Nearest_point& nearest, std::size_t count,
+                                                                                                 std::size_t k, unsigned threads);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> nearest_neighbourhoods(const Nearest_point& nearest, std::size_t count,
+                                                                                                 std::size_t k, unsigned threads)
 {
   std::vector<std::vector<std::size_t>> neighbours(count);
   parallel_for(count, threads, [&](unsigned, std::size_t begin, std::size_t end) {
@@ -95,6 +101,8 @@ inline std::vector<std::vector<std::size_t>> nearest_neighbourhoods(const Neares
   throw_if_cancelled();
   return neighbours;
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -5,6 +5,7 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_PARALLEL_FOR_H
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/worker_pool.h>
 
@@ -46,8 +47,42 @@ private:
 // workers of Worker_pool, or on threads of their own when the pool is busy (another caller's
 // loop, or a loop nested in a worker). `run` must not throw. While the caller waits for the
 // others, it calls `waiting` (if any) every callback_interval_seconds.
-inline void run_slices(unsigned threads, const std::function<void(unsigned)>& run,
-                       const std::function<void()>& waiting = {})
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void run_slices(unsigned threads, const std::function<void(unsigned)>& run,
+                                                    const std::function<void()>& waiting = {});
+
+// parallel_for() under a Progress: every slice sees it (parallel_step(), stop_requested()). The
+// owner, which runs slice 0 when it calls the loop, calls the callback as it goes and while it
+// waits for the others, then throws Operation_cancelled if the work was cancelled; a loop nested
+// in a body reports no fraction of its own. A callback that throws stops the workers, and its
+// exception goes on before theirs.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned threads, Slice_body body);
+
+// Runs body(thread, begin, end) on `threads` contiguous slices of [0, count). The slices change
+// with the thread count: each item's result must depend on the item alone (results summed over
+// items go through parallel_for_chunks(), whose chunks do not depend on the threads). The
+// calling thread runs slice 0 itself: one thread fewer to start, which matters for the many
+// short calls of ISP. The first exception thrown by a body is rethrown in the caller, once every
+// slice is done. Under a callback (progress.h), bodies call parallel_step() after each item, or
+// test stop_requested(), and return when cancelled.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void parallel_for(std::size_t count, unsigned threads, Slice_body body);
+
+// Runs body(chunk) for every chunk of [0, chunks), thread t taking the chunks t, t + threads, ...
+// (interleaved: neighbouring chunks often cost alike, so every thread gets its share). For work
+// whose results are kept per chunk and combined in chunk order by the caller: they then depend on
+// the chunks alone, never on the thread count. Stops early when the work is cancelled.
+template <typename Body>
+void parallel_for_chunks(std::size_t chunks, unsigned threads, const Body& body)
+{
+  threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, chunks)));
+  parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
+    for(std::size_t c = thread; c < chunks && parallel_poll(); c += threads) body(c);
+  });
+}
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void run_slices(unsigned threads, const std::function<void(unsigned)>& run,
+                                                    const std::function<void()>& waiting)
 {
   if(threads == 1) return run(0u);
   if(Worker_pool::instance().run(threads, run, waiting, callback_interval_seconds)) return;
@@ -73,12 +108,7 @@ inline void run_slices(unsigned threads, const std::function<void(unsigned)>& ru
   for(std::thread& w : workers) w.join();
 }
 
-// parallel_for() under a Progress: every slice sees it (parallel_step(), stop_requested()). The
-// owner, which runs slice 0 when it calls the loop, calls the callback as it goes and while it
-// waits for the others, then throws Operation_cancelled if the work was cancelled; a loop nested
-// in a body reports no fraction of its own. A callback that throws stops the workers, and its
-// exception goes on before theirs.
-inline void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned threads, Slice_body body)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void parallel_for_with_progress(Progress& progress, std::size_t count, unsigned threads, Slice_body body)
 {
   Parallel_progress loop;
   loop.count = count;
@@ -108,14 +138,7 @@ inline void parallel_for_with_progress(Progress& progress, std::size_t count, un
   if(progress.cancelled()) throw Operation_cancelled();
 }
 
-// Runs body(thread, begin, end) on `threads` contiguous slices of [0, count). The slices change
-// with the thread count: each item's result must depend on the item alone (results summed over
-// items go through parallel_for_chunks(), whose chunks do not depend on the threads). The
-// calling thread runs slice 0 itself: one thread fewer to start, which matters for the many
-// short calls of ISP. The first exception thrown by a body is rethrown in the caller, once every
-// slice is done. Under a callback (progress.h), bodies call parallel_step() after each item, or
-// test stop_requested(), and return when cancelled.
-inline void parallel_for(std::size_t count, unsigned threads, Slice_body body)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void parallel_for(std::size_t count, unsigned threads, Slice_body body)
 {
   threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, count)));
   if(active_progress != nullptr)
@@ -132,18 +155,7 @@ inline void parallel_for(std::size_t count, unsigned threads, Slice_body body)
     if(e) std::rethrow_exception(e);
 }
 
-// Runs body(chunk) for every chunk of [0, chunks), thread t taking the chunks t, t + threads, ...
-// (interleaved: neighbouring chunks often cost alike, so every thread gets its share). For work
-// whose results are kept per chunk and combined in chunk order by the caller: they then depend on
-// the chunks alone, never on the thread count. Stops early when the work is cancelled.
-template <typename Body>
-void parallel_for_chunks(std::size_t chunks, unsigned threads, const Body& body)
-{
-  threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, chunks)));
-  parallel_for(threads, threads, [&](unsigned thread, std::size_t, std::size_t) {
-    for(std::size_t c = thread; c < chunks && parallel_poll(); c += threads) body(c);
-  });
-}
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -13,6 +13,7 @@
 // (the distance to a known point of the soup, as the hint of an ISP match gives) tests the
 // triangles of the few cells within that bound.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
 
@@ -52,20 +53,7 @@ constexpr double cell_margin = 1e-6;
 
 // The mean number of triangles' bounding boxes that contain a point of the soup's box: 0 on a
 // flat soup (box of no volume), where boxes are flat too.
-inline double mean_box_overlap(const std::vector<Dtriangle>& triangles)
-{
-  auto volume = [](const CGAL::Bbox_3& b) {
-    return (b.xmax() - b.xmin()) * (b.ymax() - b.ymin()) * (b.zmax() - b.zmin());
-  };
-  CGAL::Bbox_3 all;
-  double sum = 0.;
-  for(const Dtriangle& t : triangles) {
-    const CGAL::Bbox_3 box = t.bbox();
-    sum += volume(box);
-    all += box;
-  }
-  return volume(all) > 0. ? sum / volume(all) : 0.;
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double mean_box_overlap(const std::vector<Dtriangle>& triangles);
 
 class Triangle_cells
 {
@@ -240,6 +228,25 @@ private:
   std::vector<std::uint32_t> starts_;  // of each cell's members in members_, and the end
   std::vector<std::uint32_t> members_; // the triangles of each cell, in turn
 };
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double mean_box_overlap(const std::vector<Dtriangle>& triangles)
+{
+  auto volume = [](const CGAL::Bbox_3& b) {
+    return (b.xmax() - b.xmin()) * (b.ymax() - b.ymin()) * (b.zmax() - b.zmin());
+  };
+  CGAL::Bbox_3 all;
+  double sum = 0.;
+  for(const Dtriangle& t : triangles) {
+    const CGAL::Bbox_3 box = t.bbox();
+    sum += volume(box);
+    all += box;
+  }
+  return volume(all) > 0. ? sum / volume(all) : 0.;
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -8,6 +8,7 @@
 // The AABB tree of the triangles of a shape, for the closest-point searches of the distance
 // transform and of Iterative Symmetric Points.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 
@@ -97,9 +98,25 @@ inline std::size_t nearest_of_tied(const std::int32_t* triangle, const double* d
 
 // The triangle closest to `p` (`closest`, found in `tree`), or, among the triangles at the same
 // distance within `tie` (those through the closest point), the one of lowest index.
-inline std::int32_t lowest_closest_triangle(const Triangle_tree& tree, const std::vector<Dtriangle>& triangles,
-                                            const Dpoint& p, const Triangle_tree::Point_and_primitive_id& closest,
-                                            double tie)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::int32_t lowest_closest_triangle(const Triangle_tree& tree, const std::vector<Dtriangle>& triangles,
+                                                                         const Dpoint& p, const Triangle_tree::Point_and_primitive_id& closest,
+                                                                         double tie);
+
+// The progress is polled before each split of at least this many triangles (the top splits,
+// which partially sort up to all of them), and every tree_splits_per_poll smaller splits.
+constexpr std::ptrdiff_t tree_large_split = 4096;
+constexpr std::size_t tree_splits_per_poll = 64;
+
+// tree.build(), the same splits, with calls to the progress callback while it builds (progress.h):
+// a tree of a million triangles takes a second. The search structure of its distance queries
+// (accelerate_distance_queries()) has no such hook.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void build_triangle_tree(Triangle_tree& tree);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::int32_t lowest_closest_triangle(const Triangle_tree& tree, const std::vector<Dtriangle>& triangles,
+                                                                         const Dpoint& p, const Triangle_tree::Point_and_primitive_id& closest,
+                                                                         double tie)
 {
   const Dpoint& c = closest.first;
   std::vector<Triangle_tree::Primitive_id> through;
@@ -116,15 +133,7 @@ inline std::int32_t lowest_closest_triangle(const Triangle_tree& tree, const std
   return index[nearest_of_tied(index.data(), d2.data(), index.size(), tie)];
 }
 
-// The progress is polled before each split of at least this many triangles (the top splits,
-// which partially sort up to all of them), and every tree_splits_per_poll smaller splits.
-constexpr std::ptrdiff_t tree_large_split = 4096;
-constexpr std::size_t tree_splits_per_poll = 64;
-
-// tree.build(), the same splits, with calls to the progress callback while it builds (progress.h):
-// a tree of a million triangles takes a second. The search structure of its distance queries
-// (accelerate_distance_queries()) has no such hook.
-inline void build_triangle_tree(Triangle_tree& tree)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void build_triangle_tree(Triangle_tree& tree)
 {
   if(active_progress == nullptr) {
     tree.build();
@@ -138,6 +147,8 @@ inline void build_triangle_tree(Triangle_tree& tree)
                       split(first, beyond, box);
                     });
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -18,6 +18,7 @@
 //   mapped beyond the border pull it, from one side at a time. Fitted to the border mapped onto
 //   the border, from both sides, it is exact (mirror_refined_on_border()).
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/small_matrices.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
@@ -62,7 +63,64 @@ struct Border_curve
 };
 
 // The plane of `triangles` if they all lie in one.
-inline std::optional<Dplane> plane_of_flat_surface(const std::vector<Dtriangle>& triangles, double radius)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::optional<Dplane> plane_of_flat_surface(const std::vector<Dtriangle>& triangles, double radius);
+
+// The edges that bound one triangle only, as pairs of end points.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> border_edges(const std::vector<Dtriangle>& triangles);
+
+// The border of `triangles` if they form a flat surface with a border, sampled every
+// border_spacing_in_sigmas `sigma`.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::optional<Border_curve> border_curve(const std::vector<Dtriangle>& triangles, double radius, double sigma);
+
+// The sums of one Gauss-Newton step of the fit of the mirror {x : m.x = offset} (m in the plane of
+// the border) to the border: the border points reflected, matched to the border, each residual
+// along the border's normal at the match, weighted at `width`; unknowns (turn of m about the
+// plane's normal, offset).
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::pair<Eigen::Matrix2d, Eigen::Vector2d> border_fit_sums(const Border_curve& border, const Eigen::Vector3d& m,
+                                                                                              double offset, double width);
+
+// Gauss-Newton steps of a fit to the border at each of border_fit_widths (in sigmas): `sums(width)`
+// gives the normal equations at the current unknowns, `apply(step)` moves them and says by how
+// much (a fraction of the radius); until a step moves them by less than border_fit_settled_step.
+// False if a step cannot be solved.
+template <typename Sums, typename Apply>
+bool fit_to_border(double sigma, Sums sums, Apply apply)
+{
+  for(double width : border_fit_widths)
+    for(unsigned i = 0; i < border_fit_iterations; ++i) {
+      const auto [jtj, jtr] = sums(width * sigma);
+      const Eigen::Vector2d step = solve_symmetric<2>(jtj, -jtr);
+      if(!step.allFinite() || !(jtj(0, 0) * jtj(1, 1) - jtj(0, 1) * jtj(1, 0) > 0.)) return false;
+      if(apply(step) < border_fit_settled_step) break;
+    }
+  return true;
+}
+
+// An in-plane mirror of the flat surface of `border`, refined on its border: its line in the
+// surface's plane fitted so that the border maps onto the border; it stays across the plane.
+// `plane` itself if it is no in-plane mirror or the fit fails.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool is_in_plane_mirror(const Border_curve& border, const Dplane& plane);
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Dplane mirror_refined_on_border(const Border_curve& border, const Dplane& plane, double sigma, double radius);
+
+// The sums of one Gauss-Newton step of the fit of the centre `center` of `turn` (a rotation about
+// the normal of the border's plane) to the border: the border points turned about the centre,
+// matched to the border, each residual along the border's normal at the match, weighted at
+// `width`; unknowns: the centre's move along `u` and `v`, a basis of the plane.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::pair<Eigen::Matrix2d, Eigen::Vector2d> turn_fit_sums(const Border_curve& border, const Eigen::Matrix3d& turn,
+                                                                                            const Eigen::Vector3d& center, const Eigen::Vector3d& u,
+                                                                                            const Eigen::Vector3d& v, double width);
+
+// Where the axis across the flat surface of `border` of its `order`-fold rotations (order >= 2)
+// meets its plane, refined on its border from near `point`: the centre fitted so that the border
+// turned by a 1 / order turn maps onto the border. The normals of a flat surface are all alike:
+// only its border places the axis. `point` moved onto the plane if the fit fails.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::Vector3d turn_center_on_border(const Border_curve& border, const Eigen::Vector3d& point, int order,
+                                                                          double sigma, double radius);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::optional<Dplane> plane_of_flat_surface(const std::vector<Dtriangle>& triangles, double radius)
 {
   auto vertex = [](const Dtriangle& t, int i) { return to_eigen(t[i]); };
   std::optional<Eigen::Vector3d> normal;
@@ -79,8 +137,7 @@ inline std::optional<Dplane> plane_of_flat_surface(const std::vector<Dtriangle>&
   return Dplane{*normal, normal->dot(*origin)};
 }
 
-// The edges that bound one triangle only, as pairs of end points.
-inline std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> border_edges(const std::vector<Dtriangle>& triangles)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> border_edges(const std::vector<Dtriangle>& triangles)
 {
   typedef std::array<double, 3> Key;
   auto key = [](const Dpoint& p) { return Key{p.x(), p.y(), p.z()}; };
@@ -98,9 +155,7 @@ inline std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> border_edges(con
   return edges;
 }
 
-// The border of `triangles` if they form a flat surface with a border, sampled every
-// border_spacing_in_sigmas `sigma`.
-inline std::optional<Border_curve> border_curve(const std::vector<Dtriangle>& triangles, double radius, double sigma)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::optional<Border_curve> border_curve(const std::vector<Dtriangle>& triangles, double radius, double sigma)
 {
   const std::optional<Dplane> plane = plane_of_flat_surface(triangles, radius);
   if(!plane) return std::nullopt;
@@ -123,12 +178,8 @@ inline std::optional<Border_curve> border_curve(const std::vector<Dtriangle>& tr
   return Border_curve{*plane, std::move(points), std::move(probes), Oriented_point_matcher(dpoints, std::move(normals))};
 }
 
-// The sums of one Gauss-Newton step of the fit of the mirror {x : m.x = offset} (m in the plane of
-// the border) to the border: the border points reflected, matched to the border, each residual
-// along the border's normal at the match, weighted at `width`; unknowns (turn of m about the
-// plane's normal, offset).
-inline std::pair<Eigen::Matrix2d, Eigen::Vector2d> border_fit_sums(const Border_curve& border, const Eigen::Vector3d& m,
-                                                                 double offset, double width)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::pair<Eigen::Matrix2d, Eigen::Vector2d> border_fit_sums(const Border_curve& border, const Eigen::Vector3d& m,
+                                                                                              double offset, double width)
 {
   const Eigen::Vector3d t = border.plane.normal.cross(m);
   Eigen::Matrix2d jtj = Eigen::Matrix2d::Zero();
@@ -146,32 +197,12 @@ inline std::pair<Eigen::Matrix2d, Eigen::Vector2d> border_fit_sums(const Border_
   return {jtj, jtr};
 }
 
-// Gauss-Newton steps of a fit to the border at each of border_fit_widths (in sigmas): `sums(width)`
-// gives the normal equations at the current unknowns, `apply(step)` moves them and says by how
-// much (a fraction of the radius); until a step moves them by less than border_fit_settled_step.
-// False if a step cannot be solved.
-template <typename Sums, typename Apply>
-bool fit_to_border(double sigma, Sums sums, Apply apply)
-{
-  for(double width : border_fit_widths)
-    for(unsigned i = 0; i < border_fit_iterations; ++i) {
-      const auto [jtj, jtr] = sums(width * sigma);
-      const Eigen::Vector2d step = solve_symmetric<2>(jtj, -jtr);
-      if(!step.allFinite() || !(jtj(0, 0) * jtj(1, 1) - jtj(0, 1) * jtj(1, 0) > 0.)) return false;
-      if(apply(step) < border_fit_settled_step) break;
-    }
-  return true;
-}
-
-// An in-plane mirror of the flat surface of `border`, refined on its border: its line in the
-// surface's plane fitted so that the border maps onto the border; it stays across the plane.
-// `plane` itself if it is no in-plane mirror or the fit fails.
-inline bool is_in_plane_mirror(const Border_curve& border, const Dplane& plane)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool is_in_plane_mirror(const Border_curve& border, const Dplane& plane)
 {
   return std::abs(plane.normal.dot(border.plane.normal)) <= std::sin(in_plane_mirror_tolerance);
 }
 
-inline Dplane mirror_refined_on_border(const Border_curve& border, const Dplane& plane, double sigma, double radius)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Dplane mirror_refined_on_border(const Border_curve& border, const Dplane& plane, double sigma, double radius)
 {
   if(!is_in_plane_mirror(border, plane)) return plane;
   Eigen::Vector3d m = (plane.normal - plane.normal.dot(border.plane.normal) * border.plane.normal).normalized();
@@ -187,13 +218,9 @@ inline Dplane mirror_refined_on_border(const Border_curve& border, const Dplane&
   return fitted ? Dplane{m, offset} : plane;
 }
 
-// The sums of one Gauss-Newton step of the fit of the centre `center` of `turn` (a rotation about
-// the normal of the border's plane) to the border: the border points turned about the centre,
-// matched to the border, each residual along the border's normal at the match, weighted at
-// `width`; unknowns: the centre's move along `u` and `v`, a basis of the plane.
-inline std::pair<Eigen::Matrix2d, Eigen::Vector2d> turn_fit_sums(const Border_curve& border, const Eigen::Matrix3d& turn,
-                                                               const Eigen::Vector3d& center, const Eigen::Vector3d& u,
-                                                               const Eigen::Vector3d& v, double width)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::pair<Eigen::Matrix2d, Eigen::Vector2d> turn_fit_sums(const Border_curve& border, const Eigen::Matrix3d& turn,
+                                                                                            const Eigen::Vector3d& center, const Eigen::Vector3d& u,
+                                                                                            const Eigen::Vector3d& v, double width)
 {
   const Eigen::Matrix3d fixed_minus_turn = Eigen::Matrix3d::Identity() - turn;
   Eigen::Matrix2d jtj = Eigen::Matrix2d::Zero();
@@ -210,12 +237,8 @@ inline std::pair<Eigen::Matrix2d, Eigen::Vector2d> turn_fit_sums(const Border_cu
   return {jtj, jtr};
 }
 
-// Where the axis across the flat surface of `border` of its `order`-fold rotations (order >= 2)
-// meets its plane, refined on its border from near `point`: the centre fitted so that the border
-// turned by a 1 / order turn maps onto the border. The normals of a flat surface are all alike:
-// only its border places the axis. `point` moved onto the plane if the fit fails.
-inline Eigen::Vector3d turn_center_on_border(const Border_curve& border, const Eigen::Vector3d& point, int order,
-                                             double sigma, double radius)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::Vector3d turn_center_on_border(const Border_curve& border, const Eigen::Vector3d& point, int order,
+                                                                          double sigma, double radius)
 {
   const Eigen::Vector3d normal = border.plane.normal;
   const Eigen::Vector3d start = point - (normal.dot(point) - border.plane.offset) * normal;
@@ -230,6 +253,8 @@ inline Eigen::Vector3d turn_center_on_border(const Border_curve& border, const E
     });
   return fitted ? center : start;
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

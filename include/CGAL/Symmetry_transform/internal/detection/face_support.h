@@ -9,6 +9,7 @@
 // weight exp(-d^2 / 2 sigma^2) of the distances d from the reflected points of the face to the
 // surface, at the points face_support_points() places on the face.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/detection/matchers.h>
@@ -26,12 +27,8 @@ namespace CGAL::Symmetry_transform::internal {
 // The points at which the support of a reflection on triangle abc is measured: its centroid and
 // three interior points, each a third of the way from the centroid to a corner (symmetry_support(),
 // and the segmentation's features).
-inline std::array<Eigen::Vector3d, 4> face_support_points(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                                          const Eigen::Vector3d& c)
-{
-  return {Eigen::Vector3d((a + b + c) / 3.), Eigen::Vector3d((4. * a + b + c) / 6.),
-          Eigen::Vector3d((a + 4. * b + c) / 6.), Eigen::Vector3d((a + b + 4. * c) / 6.)};
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::array<Eigen::Vector3d, 4> face_support_points(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                                                                       const Eigen::Vector3d& c);
 
 // The support of the reflection through `mirror` and the area of `count` triangles, those of
 // triangle f being corners(f) (three Eigen::Vector3d), from the exact closest points of
@@ -83,6 +80,17 @@ Face_supports<TriangleMesh> face_supports(const TriangleMesh& tm, const VertexPo
   triangle_supports(result.faces.size(), corners, matcher, mirror, sigma, threads, result.support, result.area);
   return result;
 }
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::array<Eigen::Vector3d, 4> face_support_points(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                                                                       const Eigen::Vector3d& c)
+{
+  return {Eigen::Vector3d((a + b + c) / 3.), Eigen::Vector3d((4. * a + b + c) / 6.),
+          Eigen::Vector3d((a + 4. * b + c) / 6.), Eigen::Vector3d((a + b + 4. * c) / 6.)};
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -16,6 +16,7 @@
 // minimises the distance to the match itself (closed form). On a mesh, ISP walks with the
 // approximate matches of a Closest_triangle_field and ends with exact searches in the AABB tree.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
@@ -88,13 +89,7 @@ inline Eigen::Vector3d distance_gradient(const Eigen::Vector3d& image, const Mat
 }
 
 // Whether the normal matrix `jtj` of a fit of a shape of radius `radius` leaves a direction free.
-inline bool degenerate_fit(const Eigen::Matrix3d& jtj, double radius)
-{
-  const Eigen::DiagonalMatrix<double, 3> scale(1. / radius, 1. / radius, 1.); // the turns carry a length
-  const Eigen::Matrix3d scaled = scale * jtj * scale;
-  const Eigen::Vector3d eigenvalues = symmetric_eigen(scaled).values;
-  return eigenvalues[0] <= degenerate_fit_ratio * eigenvalues[2];
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool degenerate_fit(const Eigen::Matrix3d& jtj, double radius);
 
 struct Isp_settings
 {
@@ -283,10 +278,7 @@ namespace isp {
 
 // Distance between two planes, for the convergence tests: |change of unit normal| + |change of
 // offset| / R.
-inline double step_length(const Dplane& a, const Dplane& b, double radius)
-{
-  return (a.normal - b.normal).norm() + std::abs(a.offset - b.offset) / radius;
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double step_length(const Dplane& a, const Dplane& b, double radius);
 
 template <typename Matcher>
 Isp_result coarse_phase(const std::vector<Eigen::Vector3d>& samples, Dplane plane, const Matcher& matcher,
@@ -558,6 +550,23 @@ Isp_result iterative_symmetric_points(const std::vector<Eigen::Vector3d>& sample
   }
   return result;
 }
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool degenerate_fit(const Eigen::Matrix3d& jtj, double radius)
+{
+  const Eigen::DiagonalMatrix<double, 3> scale(1. / radius, 1. / radius, 1.); // the turns carry a length
+  const Eigen::Matrix3d scaled = scale * jtj * scale;
+  const Eigen::Vector3d eigenvalues = symmetric_eigen(scaled).values;
+  return eigenvalues[0] <= degenerate_fit_ratio * eigenvalues[2];
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double isp::step_length(const Dplane& a, const Dplane& b, double radius)
+{
+  return (a.normal - b.normal).norm() + std::abs(a.offset - b.offset) / radius;
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

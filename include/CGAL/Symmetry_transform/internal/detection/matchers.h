@@ -13,6 +13,7 @@
 // normals); `hint` holds the match of a nearby point if `hint.valid`, a start for the search, and
 // receives this one.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_cells.h>
@@ -56,35 +57,10 @@ public:
     bool valid = false;
   };
 
-  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles)
-    : triangles_(triangles), tree_(triangles.begin(), triangles.end())
-  {
-    build_triangle_tree(tree_);
-    tree_.accelerate_distance_queries();
-    tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
-    if(triangles.size() <= most_triangles_for_cells || mean_box_overlap(triangles) > deepest_box_overlap_for_tree) {
-      cells_.emplace(triangles);
-      if(!cells_->built()) cells_.reset(); // too many members (max_cell_members): the tree alone
-    }
-  }
+  explicit Triangle_matcher(const std::vector<Dtriangle>& triangles);
   explicit Triangle_matcher(std::vector<Dtriangle>&&) = delete; // it refers to the triangles
 
-  Match closest(const Eigen::Vector3d& p, Hint& hint) const
-  {
-    if(cells_ && hint.valid) {
-      // The hint's match is a point of the soup: the closest one is no farther.
-      const std::optional<Triangle_cells::Nearest> nearest = cells_->closest(p, (p - to_eigen(hint.match.first)).norm());
-      if(nearest) {
-        hint.match = {to_dpoint(nearest->point), triangles_.begin() + std::ptrdiff_t(nearest->triangle)};
-        return {nearest->point, unit_normal(triangles_[nearest->triangle])};
-      }
-    }
-    const Dpoint query = to_dpoint(p);
-    hint.match = hint.valid ? tree_.closest_point_and_primitive(query, hint.match)
-                            : tree_.closest_point_and_primitive(query);
-    hint.valid = true;
-    return {to_eigen(hint.match.first), unit_normal(*hint.match.second)};
-  }
+  Match closest(const Eigen::Vector3d& p, Hint& hint) const;
 
   Match closest(const Eigen::Vector3d& p) const
   {
@@ -123,39 +99,11 @@ public:
       voxel_size_(voxel_size), resolution_(long(resolution))
   {}
 
-  Match closest(const Eigen::Vector3d& p, Hint& hint) const
-  {
-    const auto [on_triangle, t] = nearest_in_cell(p);
-    if(t < 0) {
-      hint.valid = false; // beyond the band, a match found near another point is no start
-      return exact_.closest(p, hint);
-    }
-    hint = {{to_dpoint(on_triangle), triangles_.begin() + t}, true};
-    return {on_triangle, unit_normal(triangles_[std::size_t(t)])};
-  }
+  Match closest(const Eigen::Vector3d& p, Hint& hint) const;
 
   // The point nearest to p on the closest triangles of the 8 voxels around p, and its triangle;
   // triangle -1 if none of these voxels lies in the band.
-  std::pair<Eigen::Vector3d, std::int32_t> nearest_in_cell(const Eigen::Vector3d& p) const
-  {
-    const std::array<long, 3> corner = cell_corner(p);
-    std::array<std::int32_t, 8> seen;
-    std::array<double, 8> d2;
-    std::array<Eigen::Vector3d, 8> on_triangle;
-    std::size_t count = 0;
-    for(long c = 0; c < 8; ++c) {
-      const std::int32_t t = closest_triangles_[std::size_t(
-        ((corner[2] + (c >> 2)) * resolution_ + corner[1] + ((c >> 1) & 1)) * resolution_ + corner[0] + (c & 1))];
-      if(t < 0 || std::find(seen.begin(), seen.begin() + count, t) != seen.begin() + count) continue;
-      const Dtriangle& v = triangles_[std::size_t(t)];
-      on_triangle[count] = closest_point_on_triangle(p, to_eigen(v[0]), to_eigen(v[1]), to_eigen(v[2]));
-      d2[count] = (p - on_triangle[count]).squaredNorm();
-      seen[count++] = t;
-    }
-    if(count == 0) return {Eigen::Vector3d::Zero(), -1};
-    const std::size_t nearest = nearest_of_tied(seen.data(), d2.data(), count, equal_distance_fraction_of_voxel * voxel_size_);
-    return {on_triangle[nearest], seen[nearest]};
-  }
+  std::pair<Eigen::Vector3d, std::int32_t> nearest_in_cell(const Eigen::Vector3d& p) const;
 
 private:
   // The lowest of the 8 voxels whose centres surround p, clamped to the grid.
@@ -214,6 +162,73 @@ private:
 
 typedef Point_set_matcher<false> Point_matcher;
 typedef Point_set_matcher<true> Oriented_point_matcher;
+
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Triangle_matcher::Triangle_matcher(const std::vector<Dtriangle>& triangles)
+  : triangles_(triangles), tree_(triangles.begin(), triangles.end())
+{
+  build_triangle_tree(tree_);
+  tree_.accelerate_distance_queries();
+  tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
+  if(triangles.size() <= most_triangles_for_cells || mean_box_overlap(triangles) > deepest_box_overlap_for_tree) {
+    cells_.emplace(triangles);
+    if(!cells_->built()) cells_.reset(); // too many members (max_cell_members): the tree alone
+  }
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Match Triangle_matcher::closest(const Eigen::Vector3d& p, Hint& hint) const
+{
+  if(cells_ && hint.valid) {
+    // The hint's match is a point of the soup: the closest one is no farther.
+    const std::optional<Triangle_cells::Nearest> nearest = cells_->closest(p, (p - to_eigen(hint.match.first)).norm());
+    if(nearest) {
+      hint.match = {to_dpoint(nearest->point), triangles_.begin() + std::ptrdiff_t(nearest->triangle)};
+      return {nearest->point, unit_normal(triangles_[nearest->triangle])};
+    }
+  }
+  const Dpoint query = to_dpoint(p);
+  hint.match = hint.valid ? tree_.closest_point_and_primitive(query, hint.match)
+                          : tree_.closest_point_and_primitive(query);
+  hint.valid = true;
+  return {to_eigen(hint.match.first), unit_normal(*hint.match.second)};
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Match Closest_triangle_field::closest(const Eigen::Vector3d& p, Hint& hint) const
+{
+  const auto [on_triangle, t] = nearest_in_cell(p);
+  if(t < 0) {
+    hint.valid = false; // beyond the band, a match found near another point is no start
+    return exact_.closest(p, hint);
+  }
+  hint = {{to_dpoint(on_triangle), triangles_.begin() + t}, true};
+  return {on_triangle, unit_normal(triangles_[std::size_t(t)])};
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::pair<Eigen::Vector3d, std::int32_t>
+Closest_triangle_field::nearest_in_cell(const Eigen::Vector3d& p) const
+{
+  const std::array<long, 3> corner = cell_corner(p);
+  std::array<std::int32_t, 8> seen;
+  std::array<double, 8> d2;
+  std::array<Eigen::Vector3d, 8> on_triangle;
+  std::size_t count = 0;
+  for(long c = 0; c < 8; ++c) {
+    const std::int32_t t = closest_triangles_[std::size_t(
+      ((corner[2] + (c >> 2)) * resolution_ + corner[1] + ((c >> 1) & 1)) * resolution_ + corner[0] + (c & 1))];
+    if(t < 0 || std::find(seen.begin(), seen.begin() + count, t) != seen.begin() + count) continue;
+    const Dtriangle& v = triangles_[std::size_t(t)];
+    on_triangle[count] = closest_point_on_triangle(p, to_eigen(v[0]), to_eigen(v[1]), to_eigen(v[2]));
+    d2[count] = (p - on_triangle[count]).squaredNorm();
+    seen[count++] = t;
+  }
+  if(count == 0) return {Eigen::Vector3d::Zero(), -1};
+  const std::size_t nearest = nearest_of_tied(seen.data(), d2.data(), count, equal_distance_fraction_of_voxel * voxel_size_);
+  return {on_triangle[nearest], seen[nearest]};
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -13,6 +13,7 @@
 // strongest member found, marked with its line or point; so are the turned copies of the other
 // planes about a pencil's line.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 
@@ -39,13 +40,7 @@ struct Plane_pencil
 };
 
 // The common line of two planes that are not parallel.
-inline Plane_pencil common_line(const Dplane& a, const Dplane& b, const Eigen::Vector3d& center)
-{
-  const Eigen::Vector3d d = a.normal.cross(b.normal);
-  const Eigen::Vector3d on_both = (a.offset * b.normal.cross(d) + b.offset * d.cross(a.normal)) / d.squaredNorm();
-  const Eigen::Vector3d u = d.normalized();
-  return {on_both + (center - on_both).dot(u) * u, u};
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Plane_pencil common_line(const Dplane& a, const Dplane& b, const Eigen::Vector3d& center);
 
 // A pencil is taken as such only if a member between those found is a mirror too: two planes
 // found a little off a rational angle (those of a point set, to a tenth of a degree) are no
@@ -54,21 +49,10 @@ inline Plane_pencil common_line(const Dplane& a, const Dplane& b, const Eigen::V
 constexpr double pencil_test_angle = 2.399963229728653;
 
 // `plane` turned about the line of `pencil` by `angle`.
-inline Dplane turned_about(const Plane_pencil& pencil, const Dplane& plane, double angle)
-{
-  const Eigen::Vector3d normal = Eigen::AngleAxisd(angle, pencil.direction) * plane.normal;
-  return {normal, normal.dot(pencil.point)};
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Dplane turned_about(const Plane_pencil& pencil, const Dplane& plane, double angle);
 
 // The point nearest to the lines of two pencils (their common point, for a sphere's).
-inline Eigen::Vector3d nearest_point(const Plane_pencil& p, const Plane_pencil& q)
-{
-  const Eigen::Vector3d w = p.point - q.point;
-  const double b = p.direction.dot(q.direction), d = p.direction.dot(w), e = q.direction.dot(w), det = 1. - b * b;
-  if(det < 1e-12) return p.point; // parallel lines: a pencil found twice
-  const double s = (b * e - d) / det, t = (e - b * d) / det;
-  return 0.5 * (p.point + s * p.direction + q.point + t * q.direction);
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::Vector3d nearest_point(const Plane_pencil& p, const Plane_pencil& q);
 
 // A shape with every rotation about the line of `pencil` maps each plane onto its turned copies
 // equally well: the planes of `result` that are turned copies of a stronger one (the same angle to
@@ -97,11 +81,7 @@ void drop_turned_copies(std::vector<Principal_symmetry<GT>>& result, const Plane
 
 // Whether `plane` belongs to the family of mirrors of `pencils` (one: every plane through its
 // line; two: every plane through the lines' common point), to within `angle` and `distance`.
-inline bool in_mirror_family(const std::vector<Plane_pencil>& pencils, const Dplane& plane, double angle, double distance)
-{
-  if(pencils.size() > 1) return std::abs(plane.normal.dot(nearest_point(pencils[0], pencils[1])) - plane.offset) < distance;
-  return !pencils.empty() && pencils[0].contains(plane, angle, distance);
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool in_mirror_family(const std::vector<Plane_pencil>& pencils, const Dplane& plane, double angle, double distance);
 
 // The planes of `result` that belong to the family of `pencils` (one: every plane through its line;
 // more: every plane through the lines' common point) replaced by the strongest of them, marked.
@@ -130,6 +110,39 @@ void report_mirror_families(std::vector<Principal_symmetry<GT>>& result, const s
   if(!sphere) drop_turned_copies(result, pencils[0], angle, distance);
   result.push_back(family);
 }
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Plane_pencil common_line(const Dplane& a, const Dplane& b, const Eigen::Vector3d& center)
+{
+  const Eigen::Vector3d d = a.normal.cross(b.normal);
+  const Eigen::Vector3d on_both = (a.offset * b.normal.cross(d) + b.offset * d.cross(a.normal)) / d.squaredNorm();
+  const Eigen::Vector3d u = d.normalized();
+  return {on_both + (center - on_both).dot(u) * u, u};
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Dplane turned_about(const Plane_pencil& pencil, const Dplane& plane, double angle)
+{
+  const Eigen::Vector3d normal = Eigen::AngleAxisd(angle, pencil.direction) * plane.normal;
+  return {normal, normal.dot(pencil.point)};
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::Vector3d nearest_point(const Plane_pencil& p, const Plane_pencil& q)
+{
+  const Eigen::Vector3d w = p.point - q.point;
+  const double b = p.direction.dot(q.direction), d = p.direction.dot(w), e = q.direction.dot(w), det = 1. - b * b;
+  if(det < 1e-12) return p.point; // parallel lines: a pencil found twice
+  const double s = (b * e - d) / det, t = (e - b * d) / det;
+  return 0.5 * (p.point + s * p.direction + q.point + t * q.direction);
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool in_mirror_family(const std::vector<Plane_pencil>& pencils, const Dplane& plane, double angle, double distance)
+{
+  if(pencils.size() > 1) return std::abs(plane.normal.dot(nearest_point(pencils[0], pencils[1])) - plane.offset) < distance;
+  return !pencils.empty() && pencils[0].contains(plane, angle, distance);
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

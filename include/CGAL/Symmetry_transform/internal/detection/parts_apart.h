@@ -14,6 +14,7 @@
 // scale, and these bisectors; each is refined by ISP on the whole shape with the weights of P's
 // scale, which also measure it.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/Voxel_grid.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
@@ -124,37 +125,13 @@ std::vector<Shape_part> parts_of(const std::vector<Dtriangle>& triangles, const 
   return parts;
 }
 
-inline bool parts_lie_apart(const std::vector<Shape_part>& parts, double shape_radius)
-{
-  return parts.size() >= 2 && parts.front().radius * parts_apart_radius_ratio < shape_radius;
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool parts_lie_apart(const std::vector<Shape_part>& parts, double shape_radius);
 
-inline bool alike(const Shape_part& a, const Shape_part& b)
-{
-  auto close = [](double x, double y) { return std::abs(x - y) <= alike_parts_tolerance * (std::max)(x, y); };
-  return close(a.area, b.area) && close(a.radius, b.radius);
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool alike(const Shape_part& a, const Shape_part& b);
 
 // The mirrors that may map the largest part onto another: the bisectors of their centroids, of
 // the max_bisector_candidates alike parts nearest to it.
-inline std::vector<Dplane> bisectors_of_alike_parts(const std::vector<Shape_part>& parts)
-{
-  const Shape_part& largest = parts.front();
-  std::vector<const Shape_part*> alike_parts;
-  for(std::size_t q = 1; q < parts.size(); ++q)
-    if(alike(largest, parts[q]) && (parts[q].centroid - largest.centroid).norm() > largest.radius)
-      alike_parts.push_back(&parts[q]);
-  auto distance = [&](const Shape_part* q) { return (q->centroid - largest.centroid).norm(); };
-  std::stable_sort(alike_parts.begin(), alike_parts.end(),
-                   [&](const Shape_part* a, const Shape_part* b) { return distance(a) < distance(b); });
-  alike_parts.resize((std::min)(alike_parts.size(), max_bisector_candidates));
-  std::vector<Dplane> bisectors;
-  for(const Shape_part* q : alike_parts) {
-    const Eigen::Vector3d normal = (q->centroid - largest.centroid).normalized();
-    bisectors.push_back({normal, normal.dot(0.5 * (largest.centroid + q->centroid))});
-  }
-  return bisectors;
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Dplane> bisectors_of_alike_parts(const std::vector<Shape_part>& parts);
 
 // The candidates refined by ISP with `settings` (the weights of the part's scale), each in
 // coordinates centred on the point of the candidate nearest to `part_center` (the largest part's:
@@ -190,6 +167,40 @@ std::vector<Principal_symmetry<GT>> refined_at_part_scale(const std::vector<Dpla
                    [](const Principal_symmetry<GT>& a, const Principal_symmetry<GT>& b) { return a.symmetry > b.symmetry; });
   return result;
 }
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool parts_lie_apart(const std::vector<Shape_part>& parts, double shape_radius)
+{
+  return parts.size() >= 2 && parts.front().radius * parts_apart_radius_ratio < shape_radius;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool alike(const Shape_part& a, const Shape_part& b)
+{
+  auto close = [](double x, double y) { return std::abs(x - y) <= alike_parts_tolerance * (std::max)(x, y); };
+  return close(a.area, b.area) && close(a.radius, b.radius);
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Dplane> bisectors_of_alike_parts(const std::vector<Shape_part>& parts)
+{
+  const Shape_part& largest = parts.front();
+  std::vector<const Shape_part*> alike_parts;
+  for(std::size_t q = 1; q < parts.size(); ++q)
+    if(alike(largest, parts[q]) && (parts[q].centroid - largest.centroid).norm() > largest.radius)
+      alike_parts.push_back(&parts[q]);
+  auto distance = [&](const Shape_part* q) { return (q->centroid - largest.centroid).norm(); };
+  std::stable_sort(alike_parts.begin(), alike_parts.end(),
+                   [&](const Shape_part* a, const Shape_part* b) { return distance(a) < distance(b); });
+  alike_parts.resize((std::min)(alike_parts.size(), max_bisector_candidates));
+  std::vector<Dplane> bisectors;
+  for(const Shape_part* q : alike_parts) {
+    const Eigen::Vector3d normal = (q->centroid - largest.centroid).normalized();
+    bisectors.push_back({normal, normal.dot(0.5 * (largest.centroid + q->centroid))});
+  }
+  return bisectors;
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

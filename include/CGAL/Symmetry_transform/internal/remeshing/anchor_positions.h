@@ -11,6 +11,7 @@
 // mutually nearest mirror images) moved to exact mirror positions, and those matched to
 // themselves onto the plane.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/anchors_and_chords.h>
 
 #include <algorithm>
@@ -31,8 +32,26 @@ constexpr int mirror_snapping_rounds = 8;
 
 // The position of each anchor (a working-mesh vertex): the mean of its projections onto the
 // planes of the patches around it, weighted by their areas, if `optimize`, else the vertex.
-inline std::vector<Eigen::Vector3d> anchor_positions(const Symmetric_partition& partition,
-                                                     const std::vector<std::size_t>& anchor_vertices, bool optimize)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Eigen::Vector3d> anchor_positions(const Symmetric_partition& partition,
+                                                                                  const std::vector<std::size_t>& anchor_vertices, bool optimize);
+
+typedef std::vector<std::pair<std::size_t, std::size_t>> Anchor_pairs;
+
+// Per plane, the pairs (a, b), a <= b, of anchors with the same proxies around whose mirror
+// images (of their working-mesh vertices) are mutually nearest, within `mirror_match_distance`.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Anchor_pairs> mirror_anchor_pairs(const Patch_boundaries& boundaries, const std::vector<Dplane>& planes,
+                                                                                  const std::vector<std::size_t>& anchor_vertices);
+
+// Moves the anchors of each pair to exact mirror positions (an anchor paired with itself onto
+// the plane) by alternating projections; returns the number of anchors in a pair.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::size_t snap_to_mirror_positions(const Patch_boundaries& boundaries, const std::vector<Dplane>& planes,
+                                                                         const std::vector<std::size_t>& anchor_vertices,
+                                                                         std::vector<Eigen::Vector3d>& positions);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Eigen::Vector3d> anchor_positions(const Symmetric_partition& partition,
+                                                                                  const std::vector<std::size_t>& anchor_vertices, bool optimize)
 {
   const Remeshing_mesh& mesh = partition.mesh();
   std::vector<Eigen::Vector3d> positions;
@@ -57,12 +76,8 @@ inline std::vector<Eigen::Vector3d> anchor_positions(const Symmetric_partition& 
   return positions;
 }
 
-typedef std::vector<std::pair<std::size_t, std::size_t>> Anchor_pairs;
-
-// Per plane, the pairs (a, b), a <= b, of anchors with the same proxies around whose mirror
-// images (of their working-mesh vertices) are mutually nearest, within `mirror_match_distance`.
-inline std::vector<Anchor_pairs> mirror_anchor_pairs(const Patch_boundaries& boundaries, const std::vector<Dplane>& planes,
-                                                     const std::vector<std::size_t>& anchor_vertices)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Anchor_pairs> mirror_anchor_pairs(const Patch_boundaries& boundaries, const std::vector<Dplane>& planes,
+                                                                                  const std::vector<std::size_t>& anchor_vertices)
 {
   const Remeshing_mesh& mesh = boundaries.mesh();
   const std::size_t na = anchor_vertices.size();
@@ -93,11 +108,9 @@ inline std::vector<Anchor_pairs> mirror_anchor_pairs(const Patch_boundaries& bou
   return pairs;
 }
 
-// Moves the anchors of each pair to exact mirror positions (an anchor paired with itself onto
-// the plane) by alternating projections; returns the number of anchors in a pair.
-inline std::size_t snap_to_mirror_positions(const Patch_boundaries& boundaries, const std::vector<Dplane>& planes,
-                                            const std::vector<std::size_t>& anchor_vertices,
-                                            std::vector<Eigen::Vector3d>& positions)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::size_t snap_to_mirror_positions(const Patch_boundaries& boundaries, const std::vector<Dplane>& planes,
+                                                                         const std::vector<std::size_t>& anchor_vertices,
+                                                                         std::vector<Eigen::Vector3d>& positions)
 {
   if(planes.empty() || anchor_vertices.empty()) return 0;
   const std::vector<Anchor_pairs> pairs = mirror_anchor_pairs(boundaries, planes, anchor_vertices);
@@ -118,6 +131,8 @@ inline std::size_t snap_to_mirror_positions(const Patch_boundaries& boundaries, 
     for(const auto& [a, b] : plane_pairs) matched[a] = matched[b] = 1;
   return std::size_t(std::count(matched.begin(), matched.end(), 1));
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -11,6 +11,7 @@
 // mirror positions (anchor_positions.h), then the holes left by removed folds filled
 // (hole_filling.h).
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/anchor_positions.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/anchors_and_chords.h>
@@ -32,7 +33,11 @@ struct Remeshing_output
   std::size_t matched_anchors = 0; // anchors moved to an exact mirror position
 };
 
-inline Remeshing_output extract_mesh(const Symmetric_partition& partition, const Meshing_settings& settings)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Remeshing_output extract_mesh(const Symmetric_partition& partition, const Meshing_settings& settings);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Remeshing_output extract_mesh(const Symmetric_partition& partition, const Meshing_settings& settings)
 {
   const Remeshing_mesh& mesh = partition.mesh();
   const std::vector<Dplane>& planes = partition.settings().planes;
@@ -53,6 +58,8 @@ inline Remeshing_output extract_mesh(const Symmetric_partition& partition, const
   Hole_filling(mesh, nearest_vertex, out.anchor_vertices, out.anchors, out.triangles).run();
   return out;
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -13,6 +13,7 @@
 // rule); a patch cut in pieces by this keeps its largest piece and gives the others to
 // neighbouring patches.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/partition.h>
 
 #include <cstdint>
@@ -27,7 +28,14 @@ constexpr std::size_t max_boundary_sweeps = 10;
 
 // Faces of the negative side of each plane relabelled after their mirror faces; returns how
 // many changed. A face does not join a patch across the plane, as in the flooding.
-inline std::size_t mirror_boundaries(Symmetric_partition& partition)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::size_t mirror_boundaries(Symmetric_partition& partition);
+
+// Each patch connected: the faces of all but its largest piece join neighbouring patches.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void reconnect_patches(Symmetric_partition& partition);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::size_t mirror_boundaries(Symmetric_partition& partition)
 {
   const Remeshing_mesh& mesh = partition.mesh();
   const std::vector<std::size_t>& label = partition.labels();
@@ -53,8 +61,7 @@ inline std::size_t mirror_boundaries(Symmetric_partition& partition)
   return changed;
 }
 
-// Each patch connected: the faces of all but its largest piece join neighbouring patches.
-inline void reconnect_patches(Symmetric_partition& partition)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void reconnect_patches(Symmetric_partition& partition)
 {
   const Remeshing_mesh& mesh = partition.mesh();
   const std::vector<std::size_t>& label = partition.labels();
@@ -74,6 +81,8 @@ inline void reconnect_patches(Symmetric_partition& partition)
     if(piece[f] != largest[label[f]]) partition.relabel(f, Symmetric_partition::none);
   partition.join_neighbouring_patches();
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

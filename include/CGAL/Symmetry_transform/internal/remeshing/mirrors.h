@@ -9,6 +9,7 @@
 // through each plane (for the flooding), and the nearest mesh vertex to a point (for the mirror
 // images of anchors), both by Kd-tree queries.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
@@ -31,8 +32,29 @@ constexpr double mirror_face_distance = 0.02;
 // (a Kd-tree query made once), or `none` if that is farther than `mirror_face_distance` (no
 // symmetric counterpart) or the face itself. With `strongest_only`, a face keeps only the plane
 // whose image lies closest.
-inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std::vector<Dplane>& planes,
-                                             bool strongest_only, unsigned threads)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std::vector<Dplane>& planes,
+                                                                          bool strongest_only, unsigned threads);
+
+// The working-mesh vertex nearest to a point (for the mirror images of anchors), or `none`
+// where there is no plane (the Kd-tree is only built where mirror images are looked for).
+class Nearest_vertex
+{
+public:
+  Nearest_vertex(const Remeshing_mesh& m, const std::vector<Dplane>& planes)
+  {
+    if(!planes.empty()) tree_.emplace(m.points);
+  }
+
+  std::size_t operator()(const Eigen::Vector3d& p) const { return tree_ ? (*tree_)(p).index : Remeshing_mesh::none; }
+
+private:
+  std::optional<Nearest_point> tree_;
+};
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std::vector<Dplane>& planes,
+                                                                          bool strongest_only, unsigned threads)
 {
   const double tolerance = mirror_face_distance * m.diagonal;
   const std::size_t nf = m.number_of_faces(), k = planes.size();
@@ -61,21 +83,7 @@ inline std::vector<std::size_t> mirror_faces(const Remeshing_mesh& m, const std:
   return mirror;
 }
 
-// The working-mesh vertex nearest to a point (for the mirror images of anchors), or `none`
-// where there is no plane (the Kd-tree is only built where mirror images are looked for).
-class Nearest_vertex
-{
-public:
-  Nearest_vertex(const Remeshing_mesh& m, const std::vector<Dplane>& planes)
-  {
-    if(!planes.empty()) tree_.emplace(m.points);
-  }
-
-  std::size_t operator()(const Eigen::Vector3d& p) const { return tree_ ? (*tree_)(p).index : Remeshing_mesh::none; }
-
-private:
-  std::optional<Nearest_point> tree_;
-};
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

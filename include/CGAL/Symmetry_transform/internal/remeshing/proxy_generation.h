@@ -9,6 +9,7 @@
 // iterations of flooding and fitting with proxy teleportation (partition.h), then the patch
 // boundaries of the two sides of each plane put in step (mirror_boundaries.h).
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/progress_shares.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/mirror_boundaries.h>
@@ -22,7 +23,11 @@ namespace CGAL::Symmetry_transform::internal {
 
 // Seeding, then `number_of_iterations` iterations with a teleportation attempt after each
 // `number_of_relaxations` of them, then the boundaries in step.
-inline void generate_proxies(Symmetric_partition& partition)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void generate_proxies(Symmetric_partition& partition);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void generate_proxies(Symmetric_partition& partition)
 {
   const Remeshing_settings& settings = partition.settings();
   Progress_stage stage(0., progress_shares::remeshing_seeding);
@@ -43,6 +48,8 @@ inline void generate_proxies(Symmetric_partition& partition)
     partition.fit();
   }
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -10,6 +10,7 @@
 // hierarchical (the number of proxies doubled at a time, shared by error) seeding, with
 // `number_of_relaxations` Lloyd iterations after each step.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/defaults.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/partition.h>
 
@@ -22,7 +23,30 @@
 namespace CGAL::Symmetry_transform::internal {
 
 // One proxy per connected component of the mesh, fitted to it.
-inline void bootstrap(Symmetric_partition& partition)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void bootstrap(Symmetric_partition& partition);
+
+// CGAL's error diffusion: `count` new proxies, shared among the proxies in proportion to their
+// error (to their size if all errors are zero), each placed at faces spread over its region.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::size_t add_proxies_by_error(Symmetric_partition& partition, std::size_t count);
+
+// The number of proxies doubled (up to `max_proxies`) while the error drop exceeds `min_drop`.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_hierarchical(Symmetric_partition& partition, std::size_t max_proxies, double min_drop);
+
+// A proxy at the worst face at a time, while the error drop exceeds `min_drop`.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_incremental(Symmetric_partition& partition, std::size_t max_proxies, double min_drop);
+
+// Proxies at distinct random faces (`random_seed`), up to `max_proxies`.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_random(Symmetric_partition& partition, std::size_t max_proxies);
+
+// The seeding of the settings, with CGAL's rules for `max_number_of_proxies` and
+// `min_error_drop`: a maximum under a third of the faces is kept, with the error drop if one in
+// (0, 1) is given; otherwise the maximum is a third of the faces, and the error drop the given
+// one or `defaults::min_error_drop`.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_proxies(Symmetric_partition& partition);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void bootstrap(Symmetric_partition& partition)
 {
   std::vector<std::size_t> first_faces;
   const std::vector<std::size_t> component = partition.mesh().connected_pieces(
@@ -33,9 +57,7 @@ inline void bootstrap(Symmetric_partition& partition)
   partition.reset_to_pieces(component, first_faces);
 }
 
-// CGAL's error diffusion: `count` new proxies, shared among the proxies in proportion to their
-// error (to their size if all errors are zero), each placed at faces spread over its region.
-inline std::size_t add_proxies_by_error(Symmetric_partition& partition, std::size_t count)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::size_t add_proxies_by_error(Symmetric_partition& partition, std::size_t count)
 {
   const std::size_t np = partition.proxies().size(), nf = partition.mesh().number_of_faces();
   std::vector<std::vector<std::size_t>> region(np);
@@ -69,8 +91,7 @@ inline std::size_t add_proxies_by_error(Symmetric_partition& partition, std::siz
   return added;
 }
 
-// The number of proxies doubled (up to `max_proxies`) while the error drop exceeds `min_drop`.
-inline void seed_hierarchical(Symmetric_partition& partition, std::size_t max_proxies, double min_drop)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_hierarchical(Symmetric_partition& partition, std::size_t max_proxies, double min_drop)
 {
   const double initial = partition.total_error();
   double drop = !(min_drop > 0.) ? 1. : 2. * min_drop;
@@ -82,8 +103,7 @@ inline void seed_hierarchical(Symmetric_partition& partition, std::size_t max_pr
   }
 }
 
-// A proxy at the worst face at a time, while the error drop exceeds `min_drop`.
-inline void seed_incremental(Symmetric_partition& partition, std::size_t max_proxies, double min_drop)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_incremental(Symmetric_partition& partition, std::size_t max_proxies, double min_drop)
 {
   const double initial = partition.total_error();
   double drop = !(min_drop > 0.) ? 1. : 2. * min_drop;
@@ -96,8 +116,7 @@ inline void seed_incremental(Symmetric_partition& partition, std::size_t max_pro
   }
 }
 
-// Proxies at distinct random faces (`random_seed`), up to `max_proxies`.
-inline void seed_random(Symmetric_partition& partition, std::size_t max_proxies)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_random(Symmetric_partition& partition, std::size_t max_proxies)
 {
   CGAL::Random random(partition.settings().random_seed);
   const std::size_t nf = partition.mesh().number_of_faces();
@@ -112,11 +131,7 @@ inline void seed_random(Symmetric_partition& partition, std::size_t max_proxies)
   partition.run_iterations(partition.settings().number_of_relaxations);
 }
 
-// The seeding of the settings, with CGAL's rules for `max_number_of_proxies` and
-// `min_error_drop`: a maximum under a third of the faces is kept, with the error drop if one in
-// (0, 1) is given; otherwise the maximum is a third of the faces, and the error drop the given
-// one or `defaults::min_error_drop`.
-inline void seed_proxies(Symmetric_partition& partition)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void seed_proxies(Symmetric_partition& partition)
 {
   const Remeshing_settings& settings = partition.settings();
   std::size_t max_proxies = settings.max_number_of_proxies;
@@ -135,6 +150,8 @@ inline void seed_proxies(Symmetric_partition& partition)
   else if(settings.seeding == Seeding::incremental) seed_incremental(partition, max_proxies, min_drop);
   else seed_hierarchical(partition, max_proxies, min_drop);
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

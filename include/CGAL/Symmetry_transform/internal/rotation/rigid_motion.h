@@ -10,6 +10,7 @@
 // rotational symmetries are made of. Kept free of the rest of the package (symmetry_measure.h
 // includes it).
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 
 #include <CGAL/number_utils.h>
@@ -42,34 +43,15 @@ struct Rigid_motion
   }
 };
 
-inline Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b) // a after b
-{
-  Rigid_motion r;
-  r.linear = a.linear * b.linear;
-  r.translation = a.linear * b.translation + a.translation;
-  return r;
-}
+// a after b
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b);
 
-inline Rigid_motion inverse(const Rigid_motion& a) // of an isometry
-{
-  Rigid_motion r;
-  r.linear = a.linear.transpose();
-  r.translation = -(r.linear * a.translation);
-  return r;
-}
+// of an isometry
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Rigid_motion inverse(const Rigid_motion& a);
 
 // The rotation by `angle` (radians, counterclockwise seen from the tip of `direction`) about the
 // line through `point` along the unit vector `direction` (Rodrigues' formula).
-inline Rigid_motion rotation_about(const Eigen::Vector3d& point, const Eigen::Vector3d& direction, double angle)
-{
-  const double c = std::cos(angle), s = std::sin(angle);
-  Eigen::Matrix3d cross;
-  cross << 0., -direction.z(), direction.y(), direction.z(), 0., -direction.x(), -direction.y(), direction.x(), 0.;
-  Rigid_motion r;
-  r.linear = c * Eigen::Matrix3d::Identity() + s * cross + (1. - c) * direction * direction.transpose();
-  r.translation = point - r.linear * point;
-  return r;
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Rigid_motion rotation_about(const Eigen::Vector3d& point, const Eigen::Vector3d& direction, double angle);
 
 // The motion of an Aff_transformation_3 of any kernel; throws unless it is an isometry (its
 // linear part orthogonal) with finite coefficients.
@@ -98,6 +80,37 @@ typename GT::Aff_transformation_3 to_transformation(const Rigid_motion& r)
   return typename GT::Aff_transformation_3(l(0, 0), l(0, 1), l(0, 2), t[0], l(1, 0), l(1, 1), l(1, 2), t[1],
                                            l(2, 0), l(2, 1), l(2, 2), t[2]);
 }
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Rigid_motion compose(const Rigid_motion& a, const Rigid_motion& b)
+{
+  Rigid_motion r;
+  r.linear = a.linear * b.linear;
+  r.translation = a.linear * b.translation + a.translation;
+  return r;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Rigid_motion inverse(const Rigid_motion& a)
+{
+  Rigid_motion r;
+  r.linear = a.linear.transpose();
+  r.translation = -(r.linear * a.translation);
+  return r;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Rigid_motion rotation_about(const Eigen::Vector3d& point, const Eigen::Vector3d& direction, double angle)
+{
+  const double c = std::cos(angle), s = std::sin(angle);
+  Eigen::Matrix3d cross;
+  cross << 0., -direction.z(), direction.y(), direction.z(), 0., -direction.x(), -direction.y(), direction.x(), 0.;
+  Rigid_motion r;
+  r.linear = c * Eigen::Matrix3d::Identity() + s * cross + (1. - c) * direction * direction.transpose();
+  r.translation = point - r.linear * point;
+  return r;
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

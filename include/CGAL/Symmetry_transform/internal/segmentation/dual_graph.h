@@ -10,6 +10,7 @@
 // edge, with its length and the Katz-Tal angular distance of the two faces. Connected parts of
 // sets of faces, and the triangles of a set of faces (what a segment's detection reads).
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
@@ -170,10 +171,28 @@ inline std::size_t other_face(const Dual_edge& e, std::size_t f) { return e.firs
 // The connected parts of the faces whose `region` value is the same (regions given for the faces
 // of `faces` only, through `local`, the position of a face in `faces` or -1): each part as a list
 // of faces, in increasing order of their first face in `faces`.
-inline std::vector<std::vector<std::size_t>> connected_parts(const Segmentation_mesh& mesh,
-                                                             const std::vector<std::size_t>& faces,
-                                                             const std::vector<std::size_t>& local,
-                                                             const std::vector<std::size_t>& region)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> connected_parts(const Segmentation_mesh& mesh,
+                                                                                          const std::vector<std::size_t>& faces,
+                                                                                          const std::vector<std::size_t>& local,
+                                                                                          const std::vector<std::size_t>& region);
+
+// Merges each part smaller than `min_area`, smallest first, into the neighbouring part with which
+// it shares the longest boundary; a part with no neighbour (a component of the mesh of its own)
+// stays. The result is in the order of the parts' first faces.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> merge_small_parts(const Segmentation_mesh& mesh,
+                                                                                            std::vector<std::vector<std::size_t>> parts,
+                                                                                            double min_area);
+
+// The triangles of the faces, degenerate faces left out: a subset of a mesh's faces can meet at a
+// vertex in ways a halfedge mesh rejects, and the detection only reads triangles.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> connected_parts(const Segmentation_mesh& mesh,
+                                                                                          const std::vector<std::size_t>& faces,
+                                                                                          const std::vector<std::size_t>& local,
+                                                                                          const std::vector<std::size_t>& region)
 {
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> part(faces.size(), none);
@@ -200,12 +219,9 @@ inline std::vector<std::vector<std::size_t>> connected_parts(const Segmentation_
   return parts;
 }
 
-// Merges each part smaller than `min_area`, smallest first, into the neighbouring part with which
-// it shares the longest boundary; a part with no neighbour (a component of the mesh of its own)
-// stays. The result is in the order of the parts' first faces.
-inline std::vector<std::vector<std::size_t>> merge_small_parts(const Segmentation_mesh& mesh,
-                                                               std::vector<std::vector<std::size_t>> parts,
-                                                               double min_area)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> merge_small_parts(const Segmentation_mesh& mesh,
+                                                                                            std::vector<std::vector<std::size_t>> parts,
+                                                                                            double min_area)
 {
   const std::size_t none = std::size_t(-1);
   std::vector<std::size_t> part_of(mesh.number_of_faces(), none);
@@ -240,9 +256,7 @@ inline std::vector<std::vector<std::size_t>> merge_small_parts(const Segmentatio
   return parts;
 }
 
-// The triangles of the faces, degenerate faces left out: a subset of a mesh's faces can meet at a
-// vertex in ways a halfedge mesh rejects, and the detection only reads triangles.
-inline std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
 {
   std::vector<Dtriangle> triangles;
   triangles.reserve(faces.size());
@@ -253,6 +267,8 @@ inline std::vector<Dtriangle> triangles_of_faces(const Segmentation_mesh& mesh, 
   }
   return triangles;
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

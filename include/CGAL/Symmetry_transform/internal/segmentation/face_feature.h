@@ -10,6 +10,7 @@
 // the planes' supports: symmetry tells which faces belong together, the feature (thickness) where
 // a part ends, e.g. the root of a wing that the fuselage's planes reflect as well as the wing.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -50,8 +51,13 @@ std::vector<double> face_feature_values(const TriangleMesh& tm, const FaceIndexM
 // own contrast, as each segment's planes are its own), times the square root of the number of
 // planes, so that the feature weighs as much in the clustering's squared distances as all the
 // planes together. A feature constant over the segment adds nothing.
-inline Eigen::MatrixXd with_face_feature(const Eigen::MatrixXd& supports, const std::vector<double>& values,
-                                         const std::vector<std::size_t>& faces)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::MatrixXd with_face_feature(const Eigen::MatrixXd& supports, const std::vector<double>& values,
+                                                                      const std::vector<std::size_t>& faces);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::MatrixXd with_face_feature(const Eigen::MatrixXd& supports, const std::vector<double>& values,
+                                                                      const std::vector<std::size_t>& faces)
 {
   if(values.empty()) return supports;
   double lowest = values[faces.front()], highest = lowest;
@@ -66,6 +72,8 @@ inline Eigen::MatrixXd with_face_feature(const Eigen::MatrixXd& supports, const 
     features(Eigen::Index(i), supports.cols()) = highest > lowest ? weight * (values[faces[i]] - lowest) / (highest - lowest) : 0.;
   return features;
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -11,6 +11,7 @@
 // graph cut on the dual graph (CGAL::alpha_expansion_graphcut) turns the memberships into labels
 // whose boundary is short and follows concave creases. Plain doubles and Eigen throughout.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 
@@ -53,8 +54,28 @@ struct Fuzzy_two_clusters
 
 // Area-weighted k-means with k = 2 from a k-means++ start drawn from `random`; returns the
 // weighted sum of squared distances to the nearest centre.
-inline double two_means(const Eigen::MatrixXd& x, const std::vector<double>& weights, CGAL::Random& random,
-                        Eigen::MatrixXd& centers)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double two_means(const Eigen::MatrixXd& x, const std::vector<double>& weights, CGAL::Random& random,
+                                                     Eigen::MatrixXd& centers);
+
+// The fuzzy 2-clustering of the rows of `x`: the best of `starts` k-means runs (lowest inertia,
+// the first on ties), refined by fuzzy c-means (fuzzifier 2). Deterministic for a seed.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std::vector<double>& weights,
+                                                                          unsigned seed, int starts = clustering_starts);
+
+// Labels 0/1 of the faces of a segment (`faces`; `local`: the position of a face in `faces`, or
+// -1) from their memberships (rows in the order of `faces`): the labelling that minimises
+//   sum over faces of (A_f / mean A) (-log u_f(label))
+//   + lambda sum over cut dual edges of (l_e / mean l) / (1 + d_e / mean d),
+// d_e the angular distance of the edge (Katz-Tal); the boundary is thus short and prefers
+// concave creases.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
+                                                                              const std::vector<std::size_t>& local,
+                                                                              const Eigen::MatrixXd& membership, double lambda);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double two_means(const Eigen::MatrixXd& x, const std::vector<double>& weights, CGAL::Random& random,
+                                                     Eigen::MatrixXd& centers)
 {
   const Eigen::Index n = x.rows();
   auto draw = [&](const std::vector<double>& w) { // an index with probability proportional to w
@@ -96,10 +117,8 @@ inline double two_means(const Eigen::MatrixXd& x, const std::vector<double>& wei
   return inertia;
 }
 
-// The fuzzy 2-clustering of the rows of `x`: the best of `starts` k-means runs (lowest inertia,
-// the first on ties), refined by fuzzy c-means (fuzzifier 2). Deterministic for a seed.
-inline Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std::vector<double>& weights,
-                                             unsigned seed, int starts = clustering_starts)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std::vector<double>& weights,
+                                                                          unsigned seed, int starts)
 {
   CGAL::Random random(seed);
   Fuzzy_two_clusters result;
@@ -141,15 +160,9 @@ inline Fuzzy_two_clusters fuzzy_two_clusters(const Eigen::MatrixXd& x, const std
   return result;
 }
 
-// Labels 0/1 of the faces of a segment (`faces`; `local`: the position of a face in `faces`, or
-// -1) from their memberships (rows in the order of `faces`): the labelling that minimises
-//   sum over faces of (A_f / mean A) (-log u_f(label))
-//   + lambda sum over cut dual edges of (l_e / mean l) / (1 + d_e / mean d),
-// d_e the angular distance of the edge (Katz-Tal); the boundary is thus short and prefers
-// concave creases.
-inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
-                                                 const std::vector<std::size_t>& local,
-                                                 const Eigen::MatrixXd& membership, double lambda)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
+                                                                              const std::vector<std::size_t>& local,
+                                                                              const Eigen::MatrixXd& membership, double lambda)
 {
   const std::size_t none = std::size_t(-1);
   double mean_area = 0.;
@@ -195,6 +208,8 @@ inline std::vector<std::size_t> graph_cut_labels(const Segmentation_mesh& mesh, 
     CGAL::alpha_expansion_graphcut(pairs, weights, costs, labels, CGAL::Alpha_expansion_MaxFlow_tag());
   return labels;
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -10,6 +10,7 @@
 // fuzzy clustering and graph cut, and the connected parts of the labels. Segments of one level
 // are split in parallel.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/Principal_symmetry.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
@@ -33,21 +34,7 @@
 namespace CGAL::Symmetry_transform::internal {
 
 // The largest distance from the area-weighted centroid of the faces to their vertices.
-inline double radius_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
-{
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  double area = 0.;
-  for(std::size_t f : faces) {
-    const auto& t = mesh.triangles[f];
-    center += mesh.areas[f] * (t[0] + t[1] + t[2]) / 3.;
-    area += mesh.areas[f];
-  }
-  if(area > 0.) center /= area;
-  double r2 = 0.;
-  for(std::size_t f : faces)
-    for(const Eigen::Vector3d& p : mesh.triangles[f]) r2 = (std::max)(r2, (p - center).squaredNorm());
-  return std::sqrt(r2);
-}
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double radius_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces);
 
 struct Split
 {
@@ -65,10 +52,65 @@ struct Split
 // triangle that the detection's closest-triangle field offers, with the Gaussian width `sigma`.
 // Points reflected beyond the field's band get 0. The field is in the coordinates `local` (those
 // of its surface), the mesh and the planes in the input's.
-inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
-                                     const std::vector<Principal_symmetry<Dkernel>>& planes,
-                                     const Closest_triangle_field& field, const Local_coordinates& local, double sigma,
-                                     unsigned threads)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
+                                                                  const std::vector<Principal_symmetry<Dkernel>>& planes,
+                                                                  const Closest_triangle_field& field, const Local_coordinates& local, double sigma,
+                                                                  unsigned threads);
+
+// The fraction of the segment's area that each plane reflects onto it (the area-weighted mean of
+// its column of supports; `area`: the sum of `areas`); sets split.partial_symmetry by the stopping
+// rule, a plane reflecting between `partial_fraction` and its complement.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void record_reflected_fractions(const Eigen::MatrixXd& features, const std::vector<double>& areas, double area,
+                                                                    double partial_fraction, Split& split);
+
+// The connected parts of the two labels of the clustering and graph cut of the features, the
+// parts smaller than settings.smallest_part_fraction of the segment merged into their neighbours.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> parts_of_clustering(const Segmentation_mesh& mesh,
+                                                                                              const std::vector<std::size_t>& faces,
+                                                                                              const Eigen::MatrixXd& features,
+                                                                                              const std::vector<double>& areas, double area,
+                                                                                              const Segmentation_settings& settings);
+
+// The split of the segment made of `faces` (connected, sorted), covering `fraction` of the mesh.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Split split_segment(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces, double fraction,
+                                                        long resolution, const Segmentation_settings& settings, unsigned threads);
+
+// The splits of the segments `examined` (indices into `faces_of`), in parallel: each of the
+// `threads` workers takes whole segments (the detection on a small segment keeps one core busy
+// poorly), the threads left over going to the detections themselves.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Split> split_segments(const Segmentation_mesh& mesh,
+                                                                      const std::vector<std::vector<std::size_t>>& faces_of,
+                                                                      const std::vector<std::size_t>& examined,
+                                                                      const Segmentation_settings& settings, double total_area,
+                                                                      double root_radius);
+
+// The parts merged, smallest first, into their neighbours until at most `count` remain.
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_mesh& mesh,
+                                                                                        std::vector<std::vector<std::size_t>> parts,
+                                                                                        std::size_t count);
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double radius_of(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces)
+{
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double area = 0.;
+  for(std::size_t f : faces) {
+    const auto& t = mesh.triangles[f];
+    center += mesh.areas[f] * (t[0] + t[1] + t[2]) / 3.;
+    area += mesh.areas[f];
+  }
+  if(area > 0.) center /= area;
+  double r2 = 0.;
+  for(std::size_t f : faces)
+    for(const Eigen::Vector3d& p : mesh.triangles[f]) r2 = (std::max)(r2, (p - center).squaredNorm());
+  return std::sqrt(r2);
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces,
+                                                                  const std::vector<Principal_symmetry<Dkernel>>& planes,
+                                                                  const Closest_triangle_field& field, const Local_coordinates& local, double sigma,
+                                                                  unsigned threads)
 {
   const double inverse_two_sigma2 = 1. / (2. * sigma * sigma);
   std::vector<Dplane> mirrors;
@@ -96,11 +138,8 @@ inline Eigen::MatrixXd face_supports(const Segmentation_mesh& mesh, const std::v
   return features;
 }
 
-// The fraction of the segment's area that each plane reflects onto it (the area-weighted mean of
-// its column of supports; `area`: the sum of `areas`); sets split.partial_symmetry by the stopping
-// rule, a plane reflecting between `partial_fraction` and its complement.
-inline void record_reflected_fractions(const Eigen::MatrixXd& features, const std::vector<double>& areas, double area,
-                                       double partial_fraction, Split& split)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void record_reflected_fractions(const Eigen::MatrixXd& features, const std::vector<double>& areas, double area,
+                                                                    double partial_fraction, Split& split)
 {
   for(Eigen::Index j = 0; j < features.cols(); ++j) {
     double supported = 0.;
@@ -111,13 +150,11 @@ inline void record_reflected_fractions(const Eigen::MatrixXd& features, const st
   }
 }
 
-// The connected parts of the two labels of the clustering and graph cut of the features, the
-// parts smaller than settings.smallest_part_fraction of the segment merged into their neighbours.
-inline std::vector<std::vector<std::size_t>> parts_of_clustering(const Segmentation_mesh& mesh,
-                                                                 const std::vector<std::size_t>& faces,
-                                                                 const Eigen::MatrixXd& features,
-                                                                 const std::vector<double>& areas, double area,
-                                                                 const Segmentation_settings& settings)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> parts_of_clustering(const Segmentation_mesh& mesh,
+                                                                                              const std::vector<std::size_t>& faces,
+                                                                                              const Eigen::MatrixXd& features,
+                                                                                              const std::vector<double>& areas, double area,
+                                                                                              const Segmentation_settings& settings)
 {
   const Fuzzy_two_clusters clusters = fuzzy_two_clusters(features, areas, settings.seed);
   const std::size_t none = std::size_t(-1);
@@ -127,9 +164,8 @@ inline std::vector<std::vector<std::size_t>> parts_of_clustering(const Segmentat
   return merge_small_parts(mesh, connected_parts(mesh, faces, local, labels), settings.smallest_part_fraction * area);
 }
 
-// The split of the segment made of `faces` (connected, sorted), covering `fraction` of the mesh.
-inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces, double fraction,
-                           long resolution, const Segmentation_settings& settings, unsigned threads)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Split split_segment(const Segmentation_mesh& mesh, const std::vector<std::size_t>& faces, double fraction,
+                                                        long resolution, const Segmentation_settings& settings, unsigned threads)
 {
   const auto start = std::chrono::steady_clock::now();
   auto since_start = [&start] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -160,14 +196,11 @@ inline Split split_segment(const Segmentation_mesh& mesh, const std::vector<std:
   return split;
 }
 
-// The splits of the segments `examined` (indices into `faces_of`), in parallel: each of the
-// `threads` workers takes whole segments (the detection on a small segment keeps one core busy
-// poorly), the threads left over going to the detections themselves.
-inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
-                                         const std::vector<std::vector<std::size_t>>& faces_of,
-                                         const std::vector<std::size_t>& examined,
-                                         const Segmentation_settings& settings, double total_area,
-                                         double root_radius)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Split> split_segments(const Segmentation_mesh& mesh,
+                                                                      const std::vector<std::vector<std::size_t>>& faces_of,
+                                                                      const std::vector<std::size_t>& examined,
+                                                                      const Segmentation_settings& settings, double total_area,
+                                                                      double root_radius)
 {
   std::vector<Split> splits(examined.size());
   if(examined.empty()) return splits;
@@ -186,10 +219,9 @@ inline std::vector<Split> split_segments(const Segmentation_mesh& mesh,
   return splits;
 }
 
-// The parts merged, smallest first, into their neighbours until at most `count` remain.
-inline std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_mesh& mesh,
-                                                           std::vector<std::vector<std::size_t>> parts,
-                                                           std::size_t count)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_mesh& mesh,
+                                                                                        std::vector<std::vector<std::size_t>> parts,
+                                                                                        std::size_t count)
 {
   while(parts.size() > count) {
     double smallest = std::numeric_limits<double>::infinity();
@@ -204,6 +236,8 @@ inline std::vector<std::vector<std::size_t>> merge_down_to(const Segmentation_me
   }
   return parts;
 }
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 
