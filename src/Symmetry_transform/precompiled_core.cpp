@@ -14,6 +14,7 @@
 #include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_cells.h>
 #include <CGAL/Symmetry_transform/internal/common/triangle_tree.h>
+#include <CGAL/Symmetry_transform/internal/common/worker_pool.h>
 #include <CGAL/Symmetry_transform/internal/detection/border_curve.h>
 #include <CGAL/Symmetry_transform/internal/detection/face_support.h>
 #include <CGAL/Symmetry_transform/internal/detection/iterative_symmetric_points.h>
@@ -21,11 +22,16 @@
 #include <CGAL/Symmetry_transform/internal/detection/mirror_families.h>
 #include <CGAL/Symmetry_transform/internal/detection/parts_apart.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/anchor_positions.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/anchors_and_chords.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/hole_filling.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/mesh_extraction.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/mirror_boundaries.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/mirrors.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/partition.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/patch_triangulation.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/proxy_generation.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/seeding.h>
+#include <CGAL/Symmetry_transform/internal/remeshing/working_mesh.h>
 #include <CGAL/Symmetry_transform/internal/rotation/rigid_motion.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/dual_graph.h>
 #include <CGAL/Symmetry_transform/internal/segmentation/face_feature.h>

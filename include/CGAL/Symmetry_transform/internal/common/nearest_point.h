@@ -42,42 +42,19 @@ public:
 
   explicit Nearest_point(const std::vector<Eigen::Vector3d>& points) : Nearest_point(to_dpoints(points)) {}
 
-  explicit Nearest_point(std::vector<Dpoint> points) : points_(std::move(points))
-  {
-    std::vector<std::size_t> indices(points_.size());
-    for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    tree_ = std::make_unique<Search::Tree>(indices.begin(), indices.end(), Search::Tree::Splitter(), Traits(map()));
-    tree_->build();
-  }
+  explicit Nearest_point(std::vector<Dpoint> points);
 
-  Answer operator()(const Dpoint& q) const
-  {
-    const Search search(*tree_, q, 1, 0., true, Search::Distance(map()));
-    return {search.begin()->first, search.begin()->second};
-  }
+  Answer operator()(const Dpoint& q) const;
 
   Answer operator()(const Eigen::Vector3d& q) const { return (*this)(to_dpoint(q)); }
 
   // The k nearest points to point i other than itself, nearest first.
-  std::vector<std::size_t> nearest_others(std::size_t i, std::size_t k) const
-  {
-    const Search search(*tree_, points_[i], unsigned(k + 1), 0., true, Search::Distance(map()));
-    std::vector<std::size_t> result;
-    for(const auto& found : search)
-      if(found.first != i && result.size() < k) result.push_back(found.first);
-    return result;
-  }
+  std::vector<std::size_t> nearest_others(std::size_t i, std::size_t k) const;
 
   const Dpoint& point(std::size_t i) const { return points_[i]; }
 
 private:
-  static std::vector<Dpoint> to_dpoints(const std::vector<Eigen::Vector3d>& points)
-  {
-    std::vector<Dpoint> result;
-    result.reserve(points.size());
-    for(const Eigen::Vector3d& p : points) result.push_back(to_dpoint(p));
-    return result;
-  }
+  static std::vector<Dpoint> to_dpoints(const std::vector<Eigen::Vector3d>& points);
 
   Point_map map() const { return CGAL::make_property_map(points_); }
 
@@ -100,6 +77,37 @@ CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::vector<std::size_t>> neares
   });
   throw_if_cancelled();
   return neighbours;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Nearest_point::Nearest_point(std::vector<Dpoint> points) : points_(std::move(points))
+{
+  std::vector<std::size_t> indices(points_.size());
+  for(std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
+  tree_ = std::make_unique<Search::Tree>(indices.begin(), indices.end(), Search::Tree::Splitter(), Traits(map()));
+  tree_->build();
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Nearest_point::Answer Nearest_point::operator()(const Dpoint& q) const
+{
+  const Search search(*tree_, q, 1, 0., true, Search::Distance(map()));
+  return {search.begin()->first, search.begin()->second};
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::size_t> Nearest_point::nearest_others(std::size_t i, std::size_t k) const
+{
+  const Search search(*tree_, points_[i], unsigned(k + 1), 0., true, Search::Distance(map()));
+  std::vector<std::size_t> result;
+  for(const auto& found : search)
+    if(found.first != i && result.size() < k) result.push_back(found.first);
+  return result;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Dpoint> Nearest_point::to_dpoints(const std::vector<Eigen::Vector3d>& points)
+{
+  std::vector<Dpoint> result;
+  result.reserve(points.size());
+  for(const Eigen::Vector3d& p : points) result.push_back(to_dpoint(p));
+  return result;
 }
 
 #endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS

@@ -65,110 +65,27 @@ public:
   };
 
   // `triangles` must outlive the cells; if they would list more than `max_members`, none are built.
-  explicit Triangle_cells(const std::vector<Dtriangle>& triangles, std::size_t max_members = max_cell_members)
-    : triangles_(triangles)
-  {
-    CGAL::Bbox_3 box;
-    for(const Dtriangle& t : triangles) box += t.bbox();
-    double longest = 0.;
-    for(int a = 0; a < 3; ++a) longest = (std::max)(longest, box.max(a) - box.min(a));
-    cell_size_ = longest > 0. ? longest / double(triangle_cells_per_side) : 1.; // 1: a soup that is one point
-    for(int a = 0; a < 3; ++a) {
-      origin_[a] = box.min(a);
-      dims_[a] = long((std::min)(triangle_cells_per_side, (std::max)(std::size_t(1),
-                      std::size_t(std::ceil((box.max(a) - box.min(a)) / cell_size_)))));
-    }
-    fill(max_members);
-  }
+  explicit Triangle_cells(const std::vector<Dtriangle>& triangles, std::size_t max_members = max_cell_members);
 
   bool built() const { return !starts_.empty(); }
 
   // The point of the soup closest to p and its triangle, if the soup has a point within `bound`
   // of p and the cells within `bound` are at most max_cells_per_search; nullopt otherwise (and
   // always if the cells were not built).
-  std::optional<Nearest> closest(const Eigen::Vector3d& p, double bound) const
-  {
-    if(!built()) return std::nullopt;
-    const double reach = bound * (1. + cell_margin) + cell_margin * cell_size_;
-    std::array<long, 3> lo, hi;
-    std::size_t count = 1;
-    for(int a = 0; a < 3; ++a) {
-      lo[a] = cell_of(a, p[a] - reach);
-      hi[a] = cell_of(a, p[a] + reach);
-      count *= std::size_t(hi[a] - lo[a] + 1);
-    }
-    if(count > max_cells_per_search) return std::nullopt;
-    double best = reach * reach;
-    std::optional<Nearest> nearest;
-    auto search = [&](long i, long j, long k) {
-      if(squared_distance_to_cell(p, {i, j, k}) > best) return;
-      const std::size_t cell = index_of(i, j, k);
-      for(std::uint32_t e = starts_[cell]; e < starts_[cell + 1]; ++e) {
-        const Dtriangle& t = triangles_[members_[e]];
-        const Eigen::Vector3d q = closest_point_on_triangle(p, to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2]));
-        const double d2 = (p - q).squaredNorm();
-        if(d2 < best || (d2 == best && !nearest)) {
-          best = d2;
-          nearest = Nearest{q, members_[e]};
-        }
-      }
-    };
-    // The cell of p first: its triangles shrink the bound, and most other cells are then skipped.
-    const std::array<long, 3> own{cell_of(0, p[0]), cell_of(1, p[1]), cell_of(2, p[2])};
-    search(own[0], own[1], own[2]);
-    for(long k = lo[2]; k <= hi[2]; ++k)
-      for(long j = lo[1]; j <= hi[1]; ++j)
-        for(long i = lo[0]; i <= hi[0]; ++i)
-          if(std::array<long, 3>{i, j, k} != own) search(i, j, k);
-    return nearest;
-  }
+  std::optional<Nearest> closest(const Eigen::Vector3d& p, double bound) const;
 
 private:
   // Clamped to the grid (compared as doubles: a far or infinite x converts to no long).
-  long cell_of(int axis, double x) const
-  {
-    const double c = std::floor((x - origin_[axis]) / cell_size_);
-    return !(c > 0.) ? 0L : c >= double(dims_[axis] - 1) ? dims_[axis] - 1 : long(c);
-  }
+  long cell_of(int axis, double x) const;
 
   std::size_t index_of(long i, long j, long k) const { return std::size_t((k * dims_[1] + j) * dims_[0] + i); }
 
   // The cells at the ends of an axis reach to infinity: cell_of() clamps points beyond them there.
-  double squared_distance_to_cell(const Eigen::Vector3d& p, const std::array<long, 3>& cell) const
-  {
-    constexpr double infinity = std::numeric_limits<double>::infinity();
-    double d2 = 0.;
-    for(int a = 0; a < 3; ++a) {
-      const double low = cell[a] == 0 ? -infinity : origin_[a] + double(cell[a]) * cell_size_,
-                   high = cell[a] == dims_[a] - 1 ? infinity : origin_[a] + double(cell[a] + 1) * cell_size_;
-      const double gap = (std::max)({low - p[a], p[a] - high, 0.});
-      d2 += gap * gap;
-    }
-    return d2;
-  }
+  double squared_distance_to_cell(const Eigen::Vector3d& p, const std::array<long, 3>& cell) const;
 
   // Two passes over the triangles, one to count the members of each cell, one to list them; the
   // count stops as soon as it exceeds `max_members`, and nothing is built.
-  void fill(std::size_t max_members)
-  {
-    starts_.assign(std::size_t(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
-    std::size_t members = 0;
-    for(const Dtriangle& t : triangles_) {
-      for_each_cell_crossed(t, [&](std::size_t cell) {
-        ++starts_[cell + 1];
-        ++members;
-      });
-      if(members > max_members) {
-        starts_ = std::vector<std::uint32_t>();
-        return;
-      }
-    }
-    for(std::size_t c = 1; c < starts_.size(); ++c) starts_[c] += starts_[c - 1];
-    members_.resize(starts_.back());
-    std::vector<std::uint32_t> next(starts_.begin(), starts_.end() - 1);
-    for(std::size_t t = 0; t < triangles_.size(); ++t)
-      for_each_cell_crossed(triangles_[t], [&](std::size_t cell) { members_[next[cell]++] = std::uint32_t(t); });
-  }
+  void fill(std::size_t max_members);
 
   // Calls f(cell) for each cell that the triangle may cross (a few more, never fewer): seen along
   // the axis of its normal's largest coordinate, each column of cells that its outline may meet,
@@ -244,6 +161,99 @@ CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double mean_box_overlap(const std::vector<Dt
     all += box;
   }
   return volume(all) > 0. ? sum / volume(all) : 0.;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Triangle_cells::Triangle_cells(const std::vector<Dtriangle>& triangles, std::size_t max_members)
+  : triangles_(triangles)
+{
+  CGAL::Bbox_3 box;
+  for(const Dtriangle& t : triangles) box += t.bbox();
+  double longest = 0.;
+  for(int a = 0; a < 3; ++a) longest = (std::max)(longest, box.max(a) - box.min(a));
+  cell_size_ = longest > 0. ? longest / double(triangle_cells_per_side) : 1.; // 1: a soup that is one point
+  for(int a = 0; a < 3; ++a) {
+    origin_[a] = box.min(a);
+    dims_[a] = long((std::min)(triangle_cells_per_side, (std::max)(std::size_t(1),
+                    std::size_t(std::ceil((box.max(a) - box.min(a)) / cell_size_)))));
+  }
+  fill(max_members);
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::optional<Triangle_cells::Nearest> Triangle_cells::closest(const Eigen::Vector3d& p, double bound) const
+{
+  if(!built()) return std::nullopt;
+  const double reach = bound * (1. + cell_margin) + cell_margin * cell_size_;
+  std::array<long, 3> lo, hi;
+  std::size_t count = 1;
+  for(int a = 0; a < 3; ++a) {
+    lo[a] = cell_of(a, p[a] - reach);
+    hi[a] = cell_of(a, p[a] + reach);
+    count *= std::size_t(hi[a] - lo[a] + 1);
+  }
+  if(count > max_cells_per_search) return std::nullopt;
+  double best = reach * reach;
+  std::optional<Nearest> nearest;
+  auto search = [&](long i, long j, long k) {
+    if(squared_distance_to_cell(p, {i, j, k}) > best) return;
+    const std::size_t cell = index_of(i, j, k);
+    for(std::uint32_t e = starts_[cell]; e < starts_[cell + 1]; ++e) {
+      const Dtriangle& t = triangles_[members_[e]];
+      const Eigen::Vector3d q = closest_point_on_triangle(p, to_eigen(t[0]), to_eigen(t[1]), to_eigen(t[2]));
+      const double d2 = (p - q).squaredNorm();
+      if(d2 < best || (d2 == best && !nearest)) {
+        best = d2;
+        nearest = Nearest{q, members_[e]};
+      }
+    }
+  };
+  // The cell of p first: its triangles shrink the bound, and most other cells are then skipped.
+  const std::array<long, 3> own{cell_of(0, p[0]), cell_of(1, p[1]), cell_of(2, p[2])};
+  search(own[0], own[1], own[2]);
+  for(long k = lo[2]; k <= hi[2]; ++k)
+    for(long j = lo[1]; j <= hi[1]; ++j)
+      for(long i = lo[0]; i <= hi[0]; ++i)
+        if(std::array<long, 3>{i, j, k} != own) search(i, j, k);
+  return nearest;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE long Triangle_cells::cell_of(int axis, double x) const
+{
+  const double c = std::floor((x - origin_[axis]) / cell_size_);
+  return !(c > 0.) ? 0L : c >= double(dims_[axis] - 1) ? dims_[axis] - 1 : long(c);
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE double Triangle_cells::squared_distance_to_cell(const Eigen::Vector3d& p, const std::array<long, 3>& cell) const
+{
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  double d2 = 0.;
+  for(int a = 0; a < 3; ++a) {
+    const double low = cell[a] == 0 ? -infinity : origin_[a] + double(cell[a]) * cell_size_,
+                 high = cell[a] == dims_[a] - 1 ? infinity : origin_[a] + double(cell[a] + 1) * cell_size_;
+    const double gap = (std::max)({low - p[a], p[a] - high, 0.});
+    d2 += gap * gap;
+  }
+  return d2;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void Triangle_cells::fill(std::size_t max_members)
+{
+  starts_.assign(std::size_t(dims_[0] * dims_[1] * dims_[2]) + 1, 0);
+  std::size_t members = 0;
+  for(const Dtriangle& t : triangles_) {
+    for_each_cell_crossed(t, [&](std::size_t cell) {
+      ++starts_[cell + 1];
+      ++members;
+    });
+    if(members > max_members) {
+      starts_ = std::vector<std::uint32_t>();
+      return;
+    }
+  }
+  for(std::size_t c = 1; c < starts_.size(); ++c) starts_[c] += starts_[c - 1];
+  members_.resize(starts_.back());
+  std::vector<std::uint32_t> next(starts_.begin(), starts_.end() - 1);
+  for(std::size_t t = 0; t < triangles_.size(); ++t)
+    for_each_cell_crossed(triangles_[t], [&](std::size_t cell) { members_[next[cell]++] = std::uint32_t(t); });
 }
 
 #endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS

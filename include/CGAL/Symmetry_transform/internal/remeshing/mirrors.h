@@ -40,10 +40,7 @@ CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::size_t> mirror_faces(const 
 class Nearest_vertex
 {
 public:
-  Nearest_vertex(const Remeshing_mesh& m, const std::vector<Dplane>& planes)
-  {
-    if(!planes.empty()) tree_.emplace(m.points);
-  }
+  Nearest_vertex(const Remeshing_mesh& m, const std::vector<Dplane>& planes);
 
   std::size_t operator()(const Eigen::Vector3d& p) const { return tree_ ? (*tree_)(p).index : Remeshing_mesh::none; }
 
@@ -81,6 +78,11 @@ CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<std::size_t> mirror_faces(const 
         if(j != best) mirror[f * k + j] = Remeshing_mesh::none;
     }
   return mirror;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Nearest_vertex::Nearest_vertex(const Remeshing_mesh& m, const std::vector<Dplane>& planes)
+{
+  if(!planes.empty()) tree_.emplace(m.points);
 }
 
 #endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS

@@ -11,6 +11,7 @@
 // planes each vertex lies on. The algorithm works on plain arrays for speed; the public layer
 // converts from and to the user's mesh and kernel.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
 #include <CGAL/Symmetry_transform/internal/common/geometry.h>
 #include <CGAL/Symmetry_transform/internal/common/progress.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
@@ -51,64 +52,18 @@ public:
   typedef std::array<std::size_t, 3> Triangle;
 
   // Vertices at distance at most `tolerance` of the plane count as on it.
-  Plane_cut(std::vector<Eigen::Vector3d>& points, const Dplane& plane, double tolerance)
-    : points_(points), plane_(plane), side_(points.size())
-  {
-    for(std::size_t v = 0; v < points.size(); ++v) {
-      const double s = plane.signed_distance(points[v]);
-      side_[v] = std::abs(s) <= tolerance ? 0. : s;
-    }
-  }
+  Plane_cut(std::vector<Eigen::Vector3d>& points, const Dplane& plane, double tolerance);
 
   // Appends the triangles that replace t to `out`, with t's orientation: t itself if no edge
   // crosses the plane; two triangles if one edge does (the opposite vertex on the plane); three
   // if two do (the quadrilateral side cut along its shorter diagonal).
-  void split(const Triangle& t, std::vector<Triangle>& out)
-  {
-    int count = 0;
-    for(int i = 0; i < 3; ++i) count += crosses(t[i], t[(i + 1) % 3]) ? 1 : 0;
-    if(count == 0) {
-      out.push_back(t);
-    } else if(count == 1) {
-      int i = 0;
-      while(!crosses(t[(i + 1) % 3], t[(i + 2) % 3])) ++i;
-      const std::size_t a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3], m = vertex_on(b, c);
-      out.push_back({a, b, m});
-      out.push_back({a, m, c});
-    } else { // vertex a alone on its side
-      int i = 0;
-      while(!(crosses(t[i], t[(i + 1) % 3]) && crosses(t[i], t[(i + 2) % 3]))) ++i;
-      const std::size_t a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
-      const std::size_t mb = vertex_on(a, b), mc = vertex_on(a, c);
-      out.push_back({a, mb, mc});
-      if((points_[mb] - points_[c]).squaredNorm() <= (points_[b] - points_[mc]).squaredNorm()) {
-        out.push_back({mb, b, c});
-        out.push_back({mb, c, mc});
-      } else {
-        out.push_back({mb, b, mc});
-        out.push_back({b, c, mc});
-      }
-    }
-  }
+  void split(const Triangle& t, std::vector<Triangle>& out);
 
 private:
   bool crosses(std::size_t a, std::size_t b) const { return side_[a] * side_[b] < 0.; }
 
   // The vertex where the crossing edge (a, b) meets the plane, made on first use.
-  std::size_t vertex_on(std::size_t a, std::size_t b)
-  {
-    if(a > b) std::swap(a, b);
-    const std::uint64_t key = (std::uint64_t(a) << 32) | std::uint64_t(b);
-    const auto found = vertex_of_edge_.find(key);
-    if(found != vertex_of_edge_.end()) return found->second;
-    const double t = side_[a] / (side_[a] - side_[b]);
-    Eigen::Vector3d p = points_[a] + t * (points_[b] - points_[a]);
-    p -= plane_.signed_distance(p) * plane_.normal;
-    points_.push_back(p);
-    side_.push_back(0.);
-    vertex_of_edge_.emplace(key, points_.size() - 1);
-    return points_.size() - 1;
-  }
+  std::size_t vertex_on(std::size_t a, std::size_t b);
 
   std::vector<Eigen::Vector3d>& points_;
   const Dplane& plane_;
@@ -144,58 +99,14 @@ struct Remeshing_mesh
   std::size_t neighbor(std::size_t h) const { return opposite[h] == none ? none : opposite[h] / 3; }
 
   // Splits the faces that cross `plane` (see Plane_cut); orientation and `origin` are kept.
-  void split_along(const Dplane& plane, double tolerance)
-  {
-    Plane_cut cut(points, plane, tolerance);
-    std::vector<std::array<std::size_t, 3>> new_faces;
-    std::vector<std::size_t> new_origin;
-    new_faces.reserve(faces.size());
-    for(std::size_t f = 0; f < faces.size(); ++f) {
-      cut.split(faces[f], new_faces);
-      new_origin.resize(new_faces.size(), origin[f]);
-    }
-    faces.swap(new_faces);
-    origin.swap(new_origin);
-  }
+  void split_along(const Dplane& plane, double tolerance);
 
   // The bounding-box diagonal, the faces split along each plane, then adjacency, face geometry
   // and the planes of each vertex.
-  void split_along_planes(const std::vector<Dplane>& planes)
-  {
-    const Bounding_box box(points);
-    diagonal = (box.high - box.low).norm();
-    const double on_plane = on_plane_tolerance * diagonal;
-    for(const Dplane& plane : planes) {
-      poll_progress(); // each step takes a tenth of a second on a million faces (progress.h)
-      split_along(plane, on_plane);
-    }
-    poll_progress();
-    build();
-    poll_progress();
-    vertex_planes.assign(points.size(), 0);
-    for(std::size_t v = 0; v < points.size(); ++v)
-      for(std::size_t j = 0; j < planes.size(); ++j)
-        if(std::abs(planes[j].signed_distance(points[v])) <= on_plane) vertex_planes[v] |= std::uint64_t(1) << j;
-  }
+  void split_along_planes(const std::vector<Dplane>& planes);
 
   // Adjacency and face geometry from `points` and `faces`.
-  void build()
-  {
-    build_adjacency();
-    area.resize(faces.size());
-    centroid.resize(faces.size());
-    normal.resize(faces.size());
-    double length = 0.;
-    for(std::size_t f = 0; f < faces.size(); ++f) {
-      const Eigen::Vector3d &a = points[faces[f][0]], &b = points[faces[f][1]], &c = points[faces[f][2]];
-      const Eigen::Vector3d cross = (b - a).cross(c - a);
-      area[f] = 0.5 * cross.norm();
-      centroid[f] = (a + b + c) / 3.;
-      normal[f] = area[f] > 0. ? Eigen::Vector3d(cross / (2. * area[f])) : Eigen::Vector3d::Zero();
-      length += (b - a).norm() + (c - b).norm() + (a - c).norm();
-    }
-    average_edge_length = length / double(3 * faces.size());
-  }
+  void build();
 
   // The connected pieces of the faces, where faces f and g that share an edge are joined if
   // `joined(f, g)`: the piece of each face, pieces numbered in the order of their first face.
@@ -229,33 +140,7 @@ struct Remeshing_mesh
 private:
   // Opposite halfedges and the faces around each vertex. An edge shared by more than two faces
   // (non-manifold) is treated as a border of each.
-  void build_adjacency()
-  {
-    const std::size_t nh = 3 * faces.size();
-    std::vector<std::pair<std::uint64_t, std::size_t>> keyed(nh);
-    auto key = [](std::size_t a, std::size_t b) { return (std::uint64_t(a) << 32) | std::uint64_t(b); };
-    for(std::size_t h = 0; h < nh; ++h) keyed[h] = {key(source(h), target(h)), h};
-    std::sort(keyed.begin(), keyed.end());
-    poll_progress();
-    auto range = [&](std::uint64_t k) {
-      return std::equal_range(keyed.begin(), keyed.end(), std::make_pair(k, std::size_t(0)),
-                              [](const auto& x, const auto& y) { return x.first < y.first; });
-    };
-    opposite.assign(nh, none);
-    for(std::size_t h = 0; h < nh; ++h) {
-      if(h % sequential_items_per_report == 0) poll_progress();
-      const auto same = range(key(source(h), target(h))), reverse = range(key(target(h), source(h)));
-      if(same.second - same.first == 1 && reverse.second - reverse.first == 1) opposite[h] = reverse.first->second;
-    }
-    vertex_face_begin.assign(points.size() + 1, 0);
-    for(const auto& f : faces)
-      for(std::size_t v : f) ++vertex_face_begin[v + 1];
-    for(std::size_t v = 0; v < points.size(); ++v) vertex_face_begin[v + 1] += vertex_face_begin[v];
-    vertex_face.assign(vertex_face_begin.back(), 0);
-    std::vector<std::size_t> fill(vertex_face_begin.begin(), vertex_face_begin.end() - 1);
-    for(std::size_t f = 0; f < faces.size(); ++f)
-      for(std::size_t v : faces[f]) vertex_face[fill[v]++] = f;
-  }
+  void build_adjacency();
 };
 
 // Throws unless `index` gives the descriptors of `range` distinct indices below `count` (CGAL
@@ -310,6 +195,140 @@ Remeshing_mesh make_working_mesh(const TriangleMesh& tm, std::vector<Dplane>& pl
   m.split_along_planes(planes);
   return m;
 }
+
+#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Plane_cut::Plane_cut(std::vector<Eigen::Vector3d>& points, const Dplane& plane, double tolerance)
+  : points_(points), plane_(plane), side_(points.size())
+{
+  for(std::size_t v = 0; v < points.size(); ++v) {
+    const double s = plane.signed_distance(points[v]);
+    side_[v] = std::abs(s) <= tolerance ? 0. : s;
+  }
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void Plane_cut::split(const Triangle& t, std::vector<Triangle>& out)
+{
+  int count = 0;
+  for(int i = 0; i < 3; ++i) count += crosses(t[i], t[(i + 1) % 3]) ? 1 : 0;
+  if(count == 0) {
+    out.push_back(t);
+  } else if(count == 1) {
+    int i = 0;
+    while(!crosses(t[(i + 1) % 3], t[(i + 2) % 3])) ++i;
+    const std::size_t a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3], m = vertex_on(b, c);
+    out.push_back({a, b, m});
+    out.push_back({a, m, c});
+  } else { // vertex a alone on its side
+    int i = 0;
+    while(!(crosses(t[i], t[(i + 1) % 3]) && crosses(t[i], t[(i + 2) % 3]))) ++i;
+    const std::size_t a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
+    const std::size_t mb = vertex_on(a, b), mc = vertex_on(a, c);
+    out.push_back({a, mb, mc});
+    if((points_[mb] - points_[c]).squaredNorm() <= (points_[b] - points_[mc]).squaredNorm()) {
+      out.push_back({mb, b, c});
+      out.push_back({mb, c, mc});
+    } else {
+      out.push_back({mb, b, mc});
+      out.push_back({b, c, mc});
+    }
+  }
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::size_t Plane_cut::vertex_on(std::size_t a, std::size_t b)
+{
+  if(a > b) std::swap(a, b);
+  const std::uint64_t key = (std::uint64_t(a) << 32) | std::uint64_t(b);
+  const auto found = vertex_of_edge_.find(key);
+  if(found != vertex_of_edge_.end()) return found->second;
+  const double t = side_[a] / (side_[a] - side_[b]);
+  Eigen::Vector3d p = points_[a] + t * (points_[b] - points_[a]);
+  p -= plane_.signed_distance(p) * plane_.normal;
+  points_.push_back(p);
+  side_.push_back(0.);
+  vertex_of_edge_.emplace(key, points_.size() - 1);
+  return points_.size() - 1;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void Remeshing_mesh::split_along(const Dplane& plane, double tolerance)
+{
+  Plane_cut cut(points, plane, tolerance);
+  std::vector<std::array<std::size_t, 3>> new_faces;
+  std::vector<std::size_t> new_origin;
+  new_faces.reserve(faces.size());
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    cut.split(faces[f], new_faces);
+    new_origin.resize(new_faces.size(), origin[f]);
+  }
+  faces.swap(new_faces);
+  origin.swap(new_origin);
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void Remeshing_mesh::split_along_planes(const std::vector<Dplane>& planes)
+{
+  const Bounding_box box(points);
+  diagonal = (box.high - box.low).norm();
+  const double on_plane = on_plane_tolerance * diagonal;
+  for(const Dplane& plane : planes) {
+    poll_progress(); // each step takes a tenth of a second on a million faces (progress.h)
+    split_along(plane, on_plane);
+  }
+  poll_progress();
+  build();
+  poll_progress();
+  vertex_planes.assign(points.size(), 0);
+  for(std::size_t v = 0; v < points.size(); ++v)
+    for(std::size_t j = 0; j < planes.size(); ++j)
+      if(std::abs(planes[j].signed_distance(points[v])) <= on_plane) vertex_planes[v] |= std::uint64_t(1) << j;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void Remeshing_mesh::build()
+{
+  build_adjacency();
+  area.resize(faces.size());
+  centroid.resize(faces.size());
+  normal.resize(faces.size());
+  double length = 0.;
+  for(std::size_t f = 0; f < faces.size(); ++f) {
+    const Eigen::Vector3d &a = points[faces[f][0]], &b = points[faces[f][1]], &c = points[faces[f][2]];
+    const Eigen::Vector3d cross = (b - a).cross(c - a);
+    area[f] = 0.5 * cross.norm();
+    centroid[f] = (a + b + c) / 3.;
+    normal[f] = area[f] > 0. ? Eigen::Vector3d(cross / (2. * area[f])) : Eigen::Vector3d::Zero();
+    length += (b - a).norm() + (c - b).norm() + (a - c).norm();
+  }
+  average_edge_length = length / double(3 * faces.size());
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void Remeshing_mesh::build_adjacency()
+{
+  const std::size_t nh = 3 * faces.size();
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed(nh);
+  auto key = [](std::size_t a, std::size_t b) { return (std::uint64_t(a) << 32) | std::uint64_t(b); };
+  for(std::size_t h = 0; h < nh; ++h) keyed[h] = {key(source(h), target(h)), h};
+  std::sort(keyed.begin(), keyed.end());
+  poll_progress();
+  auto range = [&](std::uint64_t k) {
+    return std::equal_range(keyed.begin(), keyed.end(), std::make_pair(k, std::size_t(0)),
+                            [](const auto& x, const auto& y) { return x.first < y.first; });
+  };
+  opposite.assign(nh, none);
+  for(std::size_t h = 0; h < nh; ++h) {
+    if(h % sequential_items_per_report == 0) poll_progress();
+    const auto same = range(key(source(h), target(h))), reverse = range(key(target(h), source(h)));
+    if(same.second - same.first == 1 && reverse.second - reverse.first == 1) opposite[h] = reverse.first->second;
+  }
+  vertex_face_begin.assign(points.size() + 1, 0);
+  for(const auto& f : faces)
+    for(std::size_t v : f) ++vertex_face_begin[v + 1];
+  for(std::size_t v = 0; v < points.size(); ++v) vertex_face_begin[v + 1] += vertex_face_begin[v];
+  vertex_face.assign(vertex_face_begin.back(), 0);
+  std::vector<std::size_t> fill(vertex_face_begin.begin(), vertex_face_begin.end() - 1);
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(std::size_t v : faces[f]) vertex_face[fill[v]++] = f;
+}
+
+#endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
 
 } // namespace CGAL::Symmetry_transform::internal
 

@@ -52,11 +52,7 @@ struct Dual_edge
 class Face_dual_edges
 {
 public:
-  void push_back(std::size_t e)
-  {
-    CGAL_assertion(size_ < 3); // each entry is one of the triangle's halfedges
-    edges_[size_++] = e;
-  }
+  void push_back(std::size_t e);
   const std::size_t* begin() const { return edges_.data(); }
   const std::size_t* end() const { return edges_.data() + size_; }
 
@@ -266,6 +262,12 @@ CGAL_SYMMETRY_TRANSFORM_CORE_INLINE std::vector<Dtriangle> triangles_of_faces(co
     if(mesh.areas[f] > 0.) triangles.emplace_back(point(t[0]), point(t[1]), point(t[2]));
   }
   return triangles;
+}
+
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE void Face_dual_edges::push_back(std::size_t e)
+{
+  CGAL_assertion(size_ < 3); // each entry is one of the triangle's halfedges
+  edges_[size_++] = e;
 }
 
 #endif // CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS
