@@ -12,6 +12,7 @@
 // does not compile them, src/Symmetry_transform/precompiled_core.cpp compiles them once per
 // build tree. Without it, nothing changes: the package is header-only.
 // What is listed here depends on neither the user's mesh nor the named parameters.
+// The package's double-only functions are the core's too (internal/common/core_definitions.h).
 
 #if defined(CGAL_SYMMETRY_TRANSFORM_PRECOMPILED_CORE) || defined(CGAL_SYMMETRY_TRANSFORM_COMPILING_CORE)
 
