@@ -5,15 +5,18 @@
 #ifndef CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_CORE_DEFINITIONS_H
 #define CGAL_SYMMETRY_TRANSFORM_INTERNAL_COMMON_CORE_DEFINITIONS_H
 
-// The functions of the package that depend on no user type (plain double geometry) are declared
-// at the top of their headers with CGAL_SYMMETRY_TRANSFORM_CORE_INLINE and defined below, inside
-// `#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS`:
+// The functions of the package that depend on no user type (plain double geometry), and the
+// member functions of its classes that do not, are declared in their headers (free functions with
+// CGAL_SYMMETRY_TRANSFORM_CORE_INLINE) and defined at the end of the header, inside
+// `#if CGAL_SYMMETRY_TRANSFORM_CORE_DEFINITIONS`, with CGAL_SYMMETRY_TRANSFORM_CORE_INLINE:
 // - header-only (the default): defined `inline` in every translation unit, as before;
 // - with CGAL_SYMMETRY_TRANSFORM_PRECOMPILED_CORE (the CMake target
 //   CGAL::Symmetry_transform_precompiled): a translation unit sees the declarations only and
 //   neither parses nor checks the definitions; src/Symmetry_transform/precompiled_core.cpp compiles
 //   them once per build tree (CGAL_SYMMETRY_TRANSFORM_COMPILING_CORE), and must include every
 //   header that uses these macros.
+// The two forms define the same functions inline and not: all the files of one program must use
+// the same target.
 
 #if defined(CGAL_SYMMETRY_TRANSFORM_COMPILING_CORE)
 #define CGAL_SYMMETRY_TRANSFORM_CORE_INLINE

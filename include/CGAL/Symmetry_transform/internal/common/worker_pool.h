@@ -11,6 +11,8 @@
 // for a while, then asleep. The pool serves one loop at a time; a loop that finds it busy
 // (another caller's, or one nested in a worker) starts threads of its own.
 
+#include <CGAL/Symmetry_transform/internal/common/core_definitions.h>
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -104,8 +106,8 @@ CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Worker_pool& Worker_pool::instance()
   return *pool;
 }
 
-CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool Worker_pool::run(unsigned threads, const std::function<void(unsigned)>& task, const std::function<void()>& waiting,
-         double waiting_interval)
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool Worker_pool::run(unsigned threads, const std::function<void(unsigned)>& task,
+                                                          const std::function<void()>& waiting, double waiting_interval)
 {
   if(in_worker() || busy_.exchange(true, std::memory_order_acquire)) return false;
   {

@@ -96,11 +96,12 @@ bool fit_to_border(double sigma, Sums sums, Apply apply)
   return true;
 }
 
+// Whether `plane` is across the plane of the flat surface of `border` (an in-plane mirror).
+CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool is_in_plane_mirror(const Border_curve& border, const Dplane& plane);
+
 // An in-plane mirror of the flat surface of `border`, refined on its border: its line in the
 // surface's plane fitted so that the border maps onto the border; it stays across the plane.
 // `plane` itself if it is no in-plane mirror or the fit fails.
-CGAL_SYMMETRY_TRANSFORM_CORE_INLINE bool is_in_plane_mirror(const Border_curve& border, const Dplane& plane);
-
 CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Dplane mirror_refined_on_border(const Border_curve& border, const Dplane& plane, double sigma, double radius);
 
 // The sums of one Gauss-Newton step of the fit of the centre `center` of `turn` (a rotation about
