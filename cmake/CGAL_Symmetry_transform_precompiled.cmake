@@ -3,10 +3,10 @@
 # user's project, instead of in every translation unit: the detection's heavy templates for
 # CGAL's Epick kernel and the package's double kernel (internal/detection/precompiled_core.h),
 # and the double-only functions and member functions, which its users see declared only
-# (internal/common/core_definitions.h). All the files of one program must link the same target. It gets the flags of its own
-# directory and of CGAL::Symmetry_transform only: a program built with definitions that change
-# CGAL's or Eigen's code (CGAL_LINKED_WITH_TBB, -ffast-math, another -std, ...) must use the
-# header-only target. Used by the package's build and its package config.
+# (internal/common/core_definitions.h). All the files of one program must link the same target.
+# It gets the flags of its own directory and of CGAL::Symmetry_transform only: a program built
+# with definitions that change CGAL's or Eigen's code (CGAL_LINKED_WITH_TBB, -ffast-math, another
+# -std, ...) must use the header-only target. Used by the package's build and its package config.
 function(cgal_symmetry_transform_add_precompiled_core source)
   if(TARGET CGAL_Symmetry_transform_precompiled)
     return()
