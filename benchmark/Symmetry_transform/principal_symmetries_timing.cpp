@@ -60,6 +60,7 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -222,7 +223,9 @@ struct Stage_objects
   std::optional<ST::Reflective_symmetry_transform<K>> prst;
   std::vector<STI::Dtriangle> triangles;
   std::optional<STI::Triangle_matcher> matcher; // its tree points into `triangles`
-  std::optional<STI::Closest_triangle_field> field; // and so does the field
+  // And so does the field; a pointer, since g++ 12 warns that the vector of an optional field may be
+  // used uninitialised (-Wmaybe-uninitialized, a false positive).
+  std::unique_ptr<STI::Closest_triangle_field> field;
   std::vector<ST::Principal_symmetry<K>> planes;
 };
 
@@ -250,12 +253,13 @@ Stage_times time_stages(const Mesh& mesh, const NP& np, unsigned repeats, Stage_
   const ST::Voxel_grid<K>& gedt = *o.gedt;
   t.tree += median_time(repeats, [&] {
     o.field.reset();
-    o.field.emplace(o.triangles, *o.matcher, closest_triangles, gedt.origin(), gedt.voxel_size(), gedt.resolution());
+    o.field = std::make_unique<STI::Closest_triangle_field>(o.triangles, *o.matcher, closest_triangles, gedt.origin(),
+                                                            gedt.voxel_size(), gedt.resolution());
   });
   t.isp = median_time(repeats, [&] {
     std::tie(t.longest_refinement, t.refined) = longest_refinement([&] {
       o.planes = STI::refine_candidates(gedt, *o.prst, STI::surface_samples(o.triangles, np), *o.matcher,
-                                        np.verbose(true), &*o.field);
+                                        np.verbose(true), o.field.get());
     });
   });
   return t;
@@ -288,7 +292,7 @@ std::string perturbed_refinements_row(const std::string& name, const NP& np, uns
     unsigned steps = 0;
     times.push_back(median_time(repeats, [&] {
       const STI::Isp_result result = STI::iterative_symmetric_points(samples, STI::to_dplane(start), *o.matcher, settings,
-                                                                     STI::Isp_phase::BOTH, {}, &*o.field);
+                                                                     STI::Isp_phase::BOTH, {}, o.field.get());
       found = result.plane;
       steps = result.iterations;
     }));

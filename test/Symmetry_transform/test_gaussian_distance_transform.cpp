@@ -142,6 +142,44 @@ TEST(GaussianDistanceTransform, BandGridAndClosestTrianglesDoNotDependOnThreadsO
   }
 }
 
+// Beyond most_distance_hints triangles the searches start from the hints of some triangles only:
+// their closest points are still exact (brute force over every triangle) and as far as with
+// CGAL's hints of all triangles.
+TEST(GaussianDistanceTransform, ClosestPointsOfALargeSoupAreExactWithHintsOfSomeTriangles)
+{
+  namespace STI = CGAL::Symmetry_transform::internal;
+  const int side = 260; // 135,200 triangles of a wavy height field
+  auto corner = [&](int i, int j) {
+    const double x = double(i) / side, y = double(j) / side;
+    return STI::Dpoint(x, y, 0.1 * std::sin(9. * x) * std::cos(7. * y));
+  };
+  std::vector<STI::Dtriangle> triangles;
+  for(int i = 0; i < side; ++i)
+    for(int j = 0; j < side; ++j) {
+      triangles.emplace_back(corner(i, j), corner(i + 1, j), corner(i + 1, j + 1));
+      triangles.emplace_back(corner(i, j), corner(i + 1, j + 1), corner(i, j + 1));
+    }
+  ASSERT_GT(triangles.size(), STI::most_distance_hints);
+  STI::Triangle_tree some(triangles.begin(), triangles.end()), all(triangles.begin(), triangles.end());
+  some.build();
+  all.build();
+  STI::accelerate_distance_queries(some, triangles);
+  all.accelerate_distance_queries();
+  CGAL::Random random(7);
+  for(int q = 0; q < 2000; ++q) {
+    const STI::Dpoint p(random.get_double(-0.2, 1.2), random.get_double(-0.2, 1.2), random.get_double(-0.4, 0.4));
+    const double d2 = CGAL::squared_distance(p, some.closest_point(p));
+    ASSERT_NEAR(d2, CGAL::squared_distance(p, all.closest_point(p)), 1e-15);
+    if(q % 40 != 0) continue;
+    double least = std::numeric_limits<double>::infinity();
+    const Eigen::Vector3d e = STI::to_eigen(p);
+    for(const STI::Dtriangle& t : triangles)
+      least = (std::min)(least, (e - STI::closest_point_on_triangle(e, STI::to_eigen(t[0]), STI::to_eigen(t[1]),
+                                                                      STI::to_eigen(t[2]))).squaredNorm());
+    ASSERT_NEAR(d2, least, 1e-15);
+  }
+}
+
 TEST(GaussianDistanceTransform, SumOfSquaresIsOne)
 {
   EXPECT_NEAR(sum_of_squares(ST::gaussian_distance_transform(ellipsoid<Surface_mesh>().mesh, small_grid).values()), 1.,

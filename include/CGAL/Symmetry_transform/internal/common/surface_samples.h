@@ -75,9 +75,11 @@ inline std::vector<Eigen::Vector3d> surface_samples(const std::vector<Dtriangle>
   check_refinement_samples(sampling);
   CGAL::Random random(sampling.seed);
   std::vector<double> cumulative_area;
+  cumulative_area.reserve(triangles.size());
   double total = 0.;
   for(const Dtriangle& t : triangles) cumulative_area.push_back(total += std::sqrt(t.squared_area()));
   std::vector<Dpoint> samples;
+  samples.reserve(sampling.count);
   for(std::size_t i = sampling.count; i > 0; --i) {
     const std::size_t f = std::size_t(std::upper_bound(cumulative_area.begin(), cumulative_area.end() - 1,
                                                        random.get_double(0., total)) - cumulative_area.begin());

@@ -170,7 +170,7 @@ CGAL_SYMMETRY_TRANSFORM_CORE_INLINE Triangle_matcher::Triangle_matcher(const std
   : triangles_(triangles), tree_(triangles.begin(), triangles.end())
 {
   build_triangle_tree(tree_);
-  tree_.accelerate_distance_queries();
+  accelerate_distance_queries(tree_, triangles);
   tree_.closest_point(CGAL::ORIGIN); // builds the search structure before threads share the tree
   if(triangles.size() <= most_triangles_for_cells || mean_box_overlap(triangles) > deepest_box_overlap_for_tree) {
     cells_.emplace(triangles);

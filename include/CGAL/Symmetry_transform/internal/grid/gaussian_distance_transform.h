@@ -208,7 +208,7 @@ void fill_gaussian_distance_transform_of_triangles(Voxel_grid<GT>& grid,
   Progress_stage stage(0., progress_shares::gedt_tree);
   Triangle_tree tree(triangles.begin(), triangles.end());
   build_triangle_tree(tree);
-  tree.accelerate_distance_queries();
+  accelerate_distance_queries(tree, triangles);
   tree.squared_distance(CGAL::ORIGIN); // builds the search structure before threads share the tree
   stage.move_to(progress_shares::gedt_tree, 1.);
   fill_gaussian_distance_transform_of_triangles(grid, triangles, tree, settings, closest_triangles);
