@@ -10,6 +10,7 @@
 #include <CGAL/Symmetry_transform/geom_traits.h>
 #include <CGAL/Symmetry_transform/internal/common/named_parameters.h>
 #include <CGAL/Symmetry_transform/internal/common/nearest_point.h>
+#include <CGAL/Symmetry_transform/internal/common/parallel_for.h>
 #include <CGAL/Symmetry_transform/internal/common/shape_input.h>
 #include <CGAL/Symmetry_transform/internal/common/surface_samples.h>
 #include <CGAL/Symmetry_transform/internal/remeshing/sampled_distances.h>
@@ -18,6 +19,7 @@
 #include <CGAL/Bbox_3.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -27,28 +29,58 @@ namespace CGAL::Symmetry_transform {
 namespace internal {
 
 // sum_x f(x) f(reflect(x)) / sum_x f(x)^2 over the non-zero samples, f(reflect(x))
-// interpolated with Catmull-Rom splines.
+// interpolated with Catmull-Rom splines. The terms are computed on `threads` threads, layer by
+// layer, and summed in the order of the samples: the same value for any thread count. The work
+// never polls a callback: a measure is never left half done (a detection measures each plane it
+// keeps, also when it is cancelled right after).
 template <typename GT, typename Reflection>
-double symmetry_measure_of_reflection(const Voxel_grid<GT>& f, const Reflection& reflect)
+double symmetry_measure_of_reflection(const Voxel_grid<GT>& f, const Reflection& reflect, unsigned threads = 1)
 {
   const std::size_t n = f.resolution();
   const double h = f.voxel_size();
   const auto& o = f.origin();
+  const std::vector<double>& values = f.values();
+  std::vector<double> terms(values.size(), 0.);
+  threads = unsigned((std::min<std::size_t>)((std::max)(threads, 1u), n));
+  run_slices(threads, [&](unsigned t) {
+    for(std::size_t k = n * t / threads; k < n * (t + 1) / threads; ++k)
+      for(std::size_t j = 0; j < n; ++j)
+        for(std::size_t i = 0; i < n; ++i) {
+          const std::size_t s = f.index(i, j, k);
+          if(values[s] == 0.) continue;
+          double x[3] = {o[0] + (double(i) + 0.5) * h, o[1] + (double(j) + 0.5) * h, o[2] + (double(k) + 0.5) * h};
+          reflect(x);
+          terms[s] = values[s] * f.cubic_value(x[0], x[1], x[2]);
+        }
+  });
   double dot = 0., norm = 0.;
-  for(std::size_t k = 0; k < n; ++k)
-    for(std::size_t j = 0; j < n; ++j)
-      for(std::size_t i = 0; i < n; ++i) {
-        const double v = f(i, j, k);
-        if(v == 0.) continue;
-        double x[3] = {o[0] + (double(i) + 0.5) * h, o[1] + (double(j) + 0.5) * h, o[2] + (double(k) + 0.5) * h};
-        reflect(x);
-        dot += v * f.cubic_value(x[0], x[1], x[2]);
-        norm += v * v;
-      }
+  for(std::size_t s = 0; s < values.size(); ++s) {
+    if(values[s] == 0.) continue;
+    dot += terms[s];
+    norm += values[s] * values[s];
+  }
   if(!(norm > 0.)) throw std::invalid_argument("Symmetry_transform: the grid is zero everywhere");
   return dot / norm;
 }
 
+// The symmetry measure of the reflection through `plane` (symmetry_measure()), on `threads` threads.
+template <typename GT>
+double plane_symmetry_measure(const Voxel_grid<GT>& f, const typename GT::Plane_3& plane, unsigned threads)
+{
+  const double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()), c = CGAL::to_double(plane.c()),
+               d = CGAL::to_double(plane.d());
+  const double nn = a * a + b * b + c * c;
+  if(!(nn > 0.)) throw std::invalid_argument("Symmetry_transform: degenerate plane");
+  return symmetry_measure_of_reflection(
+    f,
+    [&](double* x) {
+      const double s = 2. * (a * x[0] + b * x[1] + c * x[2] + d) / nn;
+      x[0] -= s * a;
+      x[1] -= s * b;
+      x[2] -= s * c;
+    },
+    threads);
+}
 
 // The symmetry distance error (symmetry_distance_error()): the mean of the distances `d` over
 // the diagonal of the bounding box `box` of the input.
@@ -117,16 +149,7 @@ double symmetry_distance_error_of_point_set(const std::vector<Dpoint>& points, c
 template <typename GeomTraits>
 double symmetry_measure(const Voxel_grid<GeomTraits>& f, const typename GeomTraits::Plane_3& plane)
 {
-  const double a = CGAL::to_double(plane.a()), b = CGAL::to_double(plane.b()), c = CGAL::to_double(plane.c()),
-               d = CGAL::to_double(plane.d());
-  const double nn = a * a + b * b + c * c;
-  if(!(nn > 0.)) throw std::invalid_argument("Symmetry_transform: degenerate plane");
-  return internal::symmetry_measure_of_reflection(f, [&](double* x) {
-    const double s = 2. * (a * x[0] + b * x[1] + c * x[2] + d) / nn;
-    x[0] -= s * a;
-    x[1] -= s * b;
-    x[2] -= s * c;
-  });
+  return internal::plane_symmetry_measure(f, plane, 1);
 }
 
 /*!

@@ -180,26 +180,36 @@ inline void check_frame(const Dpoint& center, double radius)
                                 "the origin first");
 }
 
-// Coordinates centred on the bounding box of `points`, checked as check_frame() does.
-inline Local_coordinates local_coordinates_of(const std::vector<Dpoint>& points)
+// Coordinates centred on the bounding box of the points that for_each_point(f) passes to f,
+// checked as check_frame() does. The points are read where they are: a copy of the corners of a
+// million triangles would take 80 MB and a tenth of a second.
+template <typename ForEachPoint>
+Local_coordinates local_coordinates_of_points(const Dpoint& first, const ForEachPoint& for_each_point)
 {
-  Bounding_box box(to_eigen(points.front()));
-  for(const Dpoint& p : points) box.add(to_eigen(p));
+  Bounding_box box(to_eigen(first));
+  for_each_point([&](const Dpoint& p) { box.add(to_eigen(p)); });
   const Local_coordinates local{box.center()};
   double r2 = 0.;
-  for(const Dpoint& p : points) r2 = (std::max)(r2, local.to_local(to_eigen(p)).squaredNorm());
+  for_each_point([&](const Dpoint& p) { r2 = (std::max)(r2, local.to_local(to_eigen(p)).squaredNorm()); });
   check_frame(to_dpoint(local.center), std::sqrt(r2));
   return local;
+}
+
+// Those of `points`.
+inline Local_coordinates local_coordinates_of(const std::vector<Dpoint>& points)
+{
+  return local_coordinates_of_points(points.front(), [&](const auto& f) {
+    for(const Dpoint& p : points) f(p);
+  });
 }
 
 // The same for the corners of `triangles`.
 inline Local_coordinates local_coordinates_of(const std::vector<Dtriangle>& triangles)
 {
-  std::vector<Dpoint> corners;
-  corners.reserve(3 * triangles.size());
-  for(const Dtriangle& t : triangles)
-    for(int i = 0; i < 3; ++i) corners.push_back(t[i]);
-  return local_coordinates_of(corners);
+  return local_coordinates_of_points(triangles.front()[0], [&](const auto& f) {
+    for(const Dtriangle& t : triangles)
+      for(int i = 0; i < 3; ++i) f(t[i]);
+  });
 }
 
 // `shape` (points or triangles) in the coordinates `local`.

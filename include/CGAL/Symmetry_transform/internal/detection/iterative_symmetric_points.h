@@ -222,8 +222,10 @@ Isp_sums isp_sums(const std::vector<Eigen::Vector3d>& samples, const Dplane& pla
   std::vector<Isp_sums> partial(chunks);
   parallel_for_chunks(chunks, settings.threads, [&](std::size_t c) {
     std::size_t previous = none;
+    Isp_sums sums; // on the thread's stack: the neighbouring chunks' sums share cache lines
     for(std::size_t i = c * samples_per_chunk; i < (std::min)((c + 1) * samples_per_chunk, samples.size()); ++i)
-      add_sample(i, partial[c], previous);
+      add_sample(i, sums, previous);
+    partial[c] = sums;
   });
   Isp_sums total;
   for(const Isp_sums& s : partial) total.add(s);

@@ -161,7 +161,8 @@ std::vector<Principal_symmetry<GT>> refined_at_part_scale(const std::vector<Dpla
       continue;
     kept.push_back(refined->plane);
     const typename GT::Plane_3 plane = to_plane<GT>(refined->plane);
-    result.push_back({plane, (std::min)(symmetry_measure(gedt, plane), refined->support), refined->support});
+    const double measure = plane_symmetry_measure(gedt, plane, settings.threads);
+    result.push_back({plane, (std::min)(measure, refined->support), refined->support});
   }
   std::stable_sort(result.begin(), result.end(),
                    [](const Principal_symmetry<GT>& a, const Principal_symmetry<GT>& b) { return a.symmetry > b.symmetry; });

@@ -214,7 +214,7 @@ bool complete_plane_group(const Voxel_grid<GT>& gedt, const std::vector<Eigen::V
         if(!*refined) continue;
         accepted.planes.push_back((*refined)->plane);
         const typename GT::Plane_3 plane = to_plane<GT>((*refined)->plane);
-        result.push_back({plane, symmetry_measure(gedt, plane), (*refined)->support});
+        result.push_back({plane, plane_symmetry_measure(gedt, plane, settings.threads), (*refined)->support});
         ++group.added;
         if((*refined)->support >= group_generator_support) group.generators.push_back(result.size() - 1);
       }
@@ -289,7 +289,7 @@ std::vector<Principal_symmetry<GT>> refine_candidates(const Voxel_grid<GT>& gedt
     accepted.planes.push_back(outcome.refined.plane);
     if(group.in_family(outcome.refined.plane, accepted)) continue;
     const typename GT::Plane_3 plane = to_plane<GT>(outcome.refined.plane);
-    result.push_back({plane, symmetry_measure(gedt, plane), outcome.refined.support});
+    result.push_back({plane, plane_symmetry_measure(gedt, plane, settings.threads), outcome.refined.support});
     if(!complete_plane_group(gedt, samples, matcher, settings, options.max_order, walk_matcher, accepted, group, result))
       break;
   }
