@@ -30,9 +30,8 @@ namespace internal {
 
 // sum_x f(x) f(reflect(x)) / sum_x f(x)^2 over the non-zero samples, f(reflect(x))
 // interpolated with Catmull-Rom splines. The terms are computed on `threads` threads, layer by
-// layer, and summed in the order of the samples: the same value for any thread count. The work
-// never polls a callback: a measure is never left half done (a detection measures each plane it
-// keeps, also when it is cancelled right after).
+// layer, and summed in the order of the samples: the same value for any thread count. No
+// callback is polled meanwhile: a measure is always whole, even in a detection being cancelled.
 template <typename GT, typename Reflection>
 double symmetry_measure_of_reflection(const Voxel_grid<GT>& f, const Reflection& reflect, unsigned threads = 1)
 {
