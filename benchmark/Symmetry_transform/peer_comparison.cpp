@@ -10,8 +10,9 @@
 // For each shape, the triangulated mesh is written once as an ASCII PLY file (float coordinates,
 // triangles) in the work folder, since the peer reads PLY only. Then, --repeats times, alternately:
 //   - the peer, as a child process (its output to /dev/null) with --in FILE.ply --out WORK/NAME
-//     and its defaults (a 64^3 grid, one thread per processor): the wall time from its spawn to
-//     its exit, the reading of the PLY file included, and its peak memory, ru_maxrss of wait4();
+//     and its defaults (a 64^3 grid, one thread per processor): the wall time from its start to
+//     its exit, the reading of the PLY file included, and its peak memory, ru_maxrss of wait4(),
+//     both measured by a fresh copy of this program that starts it (run_peer());
 //   - ours: detect_principal_symmetries(mesh) with the default parameters (threads: all cores) on
 //     the mesh already loaded: the wall time, and the peak memory, VmHWM of /proc/self/status
 //     after the call, the peak having been reset to the current resident size before it (by
@@ -232,30 +233,68 @@ struct Peer_run
   double seconds = 0., peak_mib = 0.;
 };
 
-// Runs the peer on `ply` (its output to /dev/null, its descriptors to `header`.*.sgrid).
-Peer_run run_peer(const std::string& peer, const std::string& ply, const std::string& header)
+// The peer is run by a copy of this program started with this flag, which runs the peer, waits
+// for it and prints its wall time and peak memory. ru_maxrss keeps a process's peak across exec:
+// a peer started by this process would report at least this one's peak (the loaded meshes), one
+// started by a fresh copy only that copy's few MiB.
+const char* const measure_peer_flag = "--measure-peer";
+
+// The fresh copy: runs `command` (a null-terminated argument list) with its output to /dev/null,
+// prints "seconds peak_kib" of it; returns 0 if it ran and exited with 0.
+int measure_peer(char** command)
 {
-  std::vector<std::string> words = {peer, "--in", ply, "--out", header};
-  std::vector<char*> arguments;
-  for(std::string& w : words) arguments.push_back(w.data());
-  arguments.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
   const auto start = std::chrono::steady_clock::now();
-  pid_t pid = 0;
-  const int error = posix_spawn(&pid, peer.c_str(), &actions, nullptr, arguments.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if(error != 0) throw std::runtime_error("cannot start " + peer + ": " + std::strerror(error));
+  const pid_t pid = fork();
+  if(pid < 0) return EXIT_FAILURE;
+  if(pid == 0) {
+    const int null = open("/dev/null", O_WRONLY);
+    if(null < 0 || dup2(null, STDOUT_FILENO) < 0 || dup2(null, STDERR_FILENO) < 0) _exit(EXIT_FAILURE);
+    execv(command[0], command);
+    _exit(EXIT_FAILURE);
+  }
   int status = 0;
   rusage usage{};
   while(wait4(pid, &status, 0, &usage) < 0)
-    if(errno != EINTR) throw std::runtime_error(std::string("wait4: ") + std::strerror(errno));
-  const double seconds = seconds_since(start);
-  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    if(errno != EINTR) return EXIT_FAILURE;
+  std::printf("%.9f %ld\n", seconds_since(start), usage.ru_maxrss);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+// Runs the peer on `ply` (its descriptors to `header`.*.sgrid) through a fresh copy of this
+// program (measure_peer()), and reads what it measured.
+Peer_run run_peer(const std::string& peer, const std::string& ply, const std::string& header)
+{
+  std::vector<std::string> words = {"/proc/self/exe", measure_peer_flag, peer, "--in", ply, "--out", header};
+  std::vector<char*> arguments;
+  for(std::string& w : words) arguments.push_back(w.data());
+  arguments.push_back(nullptr);
+  int out[2];
+  if(pipe(out) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addclose(&actions, out[0]);
+  posix_spawn_file_actions_addclose(&actions, out[1]);
+  pid_t pid = 0;
+  const int error = posix_spawn(&pid, words[0].c_str(), &actions, nullptr, arguments.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(out[1]);
+  std::string measured;
+  char buffer[256];
+  for(ssize_t n; error == 0 && (n = read(out[0], buffer, sizeof buffer)) != 0;)
+    if(n > 0) measured.append(buffer, std::size_t(n));
+    else if(errno != EINTR) break;
+  close(out[0]);
+  if(error != 0) throw std::runtime_error("cannot start " + peer + ": " + std::strerror(error));
+  int status = 0;
+  while(waitpid(pid, &status, 0) < 0)
+    if(errno != EINTR) throw std::runtime_error(std::string("waitpid: ") + std::strerror(errno));
+  Peer_run run;
+  double peak_kib = 0.;
+  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !(std::istringstream(measured) >> run.seconds >> peak_kib))
     throw std::runtime_error("the peer failed (wait status " + std::to_string(status) + ")");
-  return {seconds, double(usage.ru_maxrss) / kib_per_mib};
+  run.peak_mib = peak_kib / kib_per_mib;
+  return run;
 }
 
 // A size of /proc/self/status ("VmRSS", "VmHWM"; given in kB) in MiB.
@@ -527,6 +566,7 @@ void print_summary(std::vector<Row> rows, const std::vector<std::string>& skippe
 
 int main(int argc, char** argv)
 try {
+  if(argc > 2 && std::string(argv[1]) == measure_peer_flag) return measure_peer(argv + 2);
   const Options o = parse(argc, argv);
   std::ofstream tsv;
   if(!o.output.empty()) {
