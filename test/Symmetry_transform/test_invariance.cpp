@@ -275,6 +275,27 @@ TEST(ThreadCount, ChangesNoBitOfThePlanesOfAMesh)
     [&](unsigned t) { return coefficients(ST::detect_principal_symmetries(s.mesh, grid_32.number_of_threads(t))); });
 }
 
+// The detection measures each plane it keeps on its threads: the terms are computed per layer of
+// the grid and summed in one order, so the value is that of the public, one-thread measure.
+TEST(ThreadCount, ChangesNoBitOfTheMeasureOfAPlane)
+{
+  const Shape<Surface_mesh> s = test_shape();
+  const auto gedt = ST::gaussian_distance_transform(s.mesh, grid_32);
+  const std::vector<Plane_3> planes = {Plane_3(gedt.center(), Vector_3(1., 0., 0.)),
+                                       Plane_3(gedt.center(), Vector_3(0.3, -0.5, 0.8)),
+                                       Plane_3(gedt.center(), Vector_3(0., 1., 1.))};
+  std::vector<double> public_measures;
+  for(const Plane_3& p : planes) public_measures.push_back(ST::symmetry_measure(gedt, p));
+  for(double m : public_measures) ASSERT_GT(m, 0.05); // planes through the shape: many terms
+  expect_same_for_every_thread_count([&](unsigned t) {
+    std::vector<double> measures;
+    for(const Plane_3& p : planes) measures.push_back(ST::internal::plane_symmetry_measure(gedt, p, t));
+    return measures;
+  });
+  for(std::size_t i = 0; i < planes.size(); ++i)
+    EXPECT_EQ(ST::internal::plane_symmetry_measure(gedt, planes[i], 3), public_measures[i]) << "plane " << i;
+}
+
 TEST(ThreadCount, ChangesNoBitOfThePlanesOfAPointSet)
 {
   const Shape<Surface_mesh> s = test_shape();
